@@ -1,0 +1,2 @@
+// Compile OpenFOAM v1912's metisDecomp.C unchanged (see Make/files)
+#include "metisDecomp.C"

@@ -1,0 +1,47 @@
+#!/bin/bash
+# decomposePar with method metis uses the project's real libmetisDecomp (Debian's
+# is a stub that aborts): a 2D 60x40 mesh split in 3 must balance the cells to
+# 2 % and cut at most 30 % more faces than the ideal straight cuts of 'simple'.
+set -eu
+case=$JWLIBFOAM_TEST_DIR/case
+mkdir -p "$case/system" "$case/constant" && cd "$case"
+header() { printf 'FoamFile { version 2.0; format ascii; class dictionary; object %s; }\n' "$1"; }
+{ header controlDict; echo 'application none; startFrom startTime; startTime 0; stopAt endTime; endTime 1; deltaT 1; writeControl timeStep; writeInterval 1;'; } > system/controlDict
+{ header fvSchemes; echo 'ddtSchemes{} gradSchemes{} divSchemes{} laplacianSchemes{} interpolationSchemes{} snGradSchemes{}'; } > system/fvSchemes
+{ header fvSolution; } > system/fvSolution
+{ header blockMeshDict; cat <<'B'; } > system/blockMeshDict
+vertices ((0 0 0) (1.5 0 0) (1.5 1 0) (0 1 0) (0 0 0.1) (1.5 0 0.1) (1.5 1 0.1) (0 1 0.1));
+blocks (hex (0 1 2 3 4 5 6 7) (60 40 1) simpleGrading (1 1 1));
+boundary ( walls { type wall; faces ((0 4 7 3) (1 2 6 5) (0 1 5 4) (3 7 6 2)); }
+           frontAndBack { type empty; faces ((0 3 2 1) (4 5 6 7)); } );
+B
+blockMesh > log.blockMesh 2>&1
+
+cutFaces() {  # total processor faces over all ranks / 2
+    local n=0
+    for d in processor*; do
+        m=$(awk '/procBoundary/{f=1} f&&/nFaces/{gsub(";","",$2); s+=$2; f=0} END{print s+0}' "$d/constant/polyMesh/boundary")
+        n=$((n + m))
+    done
+    echo $((n / 2))
+}
+cells() { for d in processor*; do head -20 "$d/constant/polyMesh/owner" | grep -o 'nCells:[0-9]*' | cut -d: -f2; done; }
+
+{ header decomposeParDict; echo 'numberOfSubdomains 3; method simple; coeffs { n (3 1 1); }'; } > system/decomposeParDict
+decomposePar -force > log.decomposePar.simple 2>&1
+simpleCut=$(cutFaces)
+
+{ header decomposeParDict; echo 'numberOfSubdomains 3; method metis;'; } > system/decomposeParDict
+decomposePar -force > log.decomposePar.metis 2>&1 || { tail -20 log.decomposePar.metis; exit 1; }
+metisCut=$(cutFaces)
+read -r -d '' -a counts < <(cells) || true
+/usr/bin/python3 - "$simpleCut" "$metisCut" "${counts[@]}" <<'PY'
+import sys
+simple, metis = int(sys.argv[1]), int(sys.argv[2])
+cells = [int(c) for c in sys.argv[3:]]
+imbalance = max(cells) / (sum(cells) / len(cells)) - 1
+print(f">> metis: cells per rank {cells}, imbalance {imbalance:.3%} (tolerance 2%)")
+print(f">> cut faces: metis {metis}, simple {simple} (tolerance 1.3x simple)")
+ok = len(cells) == 3 and sum(cells) == 2400 and imbalance <= 0.02 and 0 < metis <= 1.3 * simple
+sys.exit(0 if ok else 1)
+PY
