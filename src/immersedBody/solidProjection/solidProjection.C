@@ -1,0 +1,267 @@
+/*---------------------------------------------------------------------------*\
+  jwlIbFoam: blast in fractured solids, built on OpenFOAM v1912
+-------------------------------------------------------------------------------
+License
+    GNU General Public License v3 or later (as OpenFOAM).
+\*---------------------------------------------------------------------------*/
+
+#include "solidProjection.H"
+#include "polyMesh.H"
+#include "emptyPolyPatch.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    // Make every polygon counter-clockwise and return the areas
+    Foam::scalarField orientAndMeasure
+    (
+        Foam::List<Foam::vector2D>& vertices,
+        const Foam::labelUList& start
+    )
+    {
+        using namespace Foam;
+        scalarField area(start.size() - 1);
+        forAll(area, c)
+        {
+            SubList<vector2D> poly(vertices, start[c + 1] - start[c], start[c]);
+            vector2D centroid;
+            polygonClipping::areaAndCentroid(poly, area[c], centroid);
+            if (area[c] < 0)
+            {
+                std::reverse(poly.begin(), poly.end());
+                area[c] = -area[c];
+            }
+        }
+        return area;
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::FixedList<Foam::scalar, 3> Foam::solidProjection::barycentric
+(
+    const vector2D& x,
+    const vector2D& a,
+    const vector2D& b,
+    const vector2D& c
+)
+{
+    const scalar twiceArea = polygonClipping::cross(a, b, c);
+    const scalar la = polygonClipping::cross(x, b, c)/twiceArea;
+    const scalar lb = polygonClipping::cross(a, x, c)/twiceArea;
+    return FixedList<scalar, 3>({la, lb, 1 - la - lb});
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::solidProjection::solidProjection
+(
+    const UList<vector2D>& cellVertices,
+    const labelUList& cellStart
+)
+:
+    cellVertices_(cellVertices),
+    cellStart_(cellStart),
+    cellArea_(orientAndMeasure(cellVertices_, cellStart_)),
+    index_(cellVertices_, cellStart_),
+    lastTriangle_(cellArea_.size(), -1)
+{}
+
+
+Foam::solidProjection::solidProjection(const polyMesh& mesh)
+:
+    solidProjection(cellPolygons(mesh))
+{}
+
+
+Foam::solidProjection::solidProjection
+(
+    const std::pair<List<vector2D>, labelList>& polygons
+)
+:
+    solidProjection(polygons.first, polygons.second)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+std::pair<Foam::List<Foam::vector2D>, Foam::labelList>
+Foam::solidProjection::cellPolygons(const polyMesh& mesh)
+{
+    std::pair<List<vector2D>, labelList> result;
+    List<vector2D>& vertices = result.first;
+    labelList& start = result.second;
+
+    labelList backFace(mesh.nCells(), -1);
+    for (const polyPatch& pp : mesh.boundaryMesh())
+    {
+        if (!isA<emptyPolyPatch>(pp))
+        {
+            continue;
+        }
+        forAll(pp, i)
+        {
+            const label facei = pp.start() + i;
+            if (mesh.faceAreas()[facei].z() < 0)
+            {
+                backFace[mesh.faceOwner()[facei]] = facei;
+            }
+        }
+    }
+
+    start.setSize(mesh.nCells() + 1);
+    start[0] = 0;
+    forAll(backFace, celli)
+    {
+        if (backFace[celli] < 0)
+        {
+            FatalErrorInFunction
+                << "The immersed body needs a 2D mesh in the x-y plane (one"
+                << " cell thick, 'empty' front and back patches): cell "
+                << celli << " at " << mesh.cellCentres()[celli]
+                << " has no face on an empty patch with normal -z"
+                << exit(FatalError);
+        }
+        start[celli + 1] = start[celli] + mesh.faces()[backFace[celli]].size();
+    }
+
+    vertices.setSize(start.last());
+    forAll(backFace, celli)
+    {
+        const face& f = mesh.faces()[backFace[celli]];
+        forAll(f, k)
+        {
+            const point& p = mesh.points()[f[k]];
+            vertices[start[celli] + k] = vector2D(p.x(), p.y());
+        }
+    }
+    return result;
+}
+
+
+void Foam::solidProjection::project
+(
+    const UList<vector2D>& points,
+    const UList<FixedList<label, 3>>& triangles,
+    const UList<vector2D>& pointVelocities,
+    scalarField& alphaSolid,
+    List<vector2D>& Usolid
+)
+{
+    alphaSolid.setSize(nCells());
+    Usolid.setSize(nCells());
+    alphaSolid = 0;
+    Usolid = Zero;
+    overlapCell_.clear();
+    overlapTriangle_.clear();
+    overlapArea_.clear();
+    overlapCentroid_.clear();
+    lastTriangle_ = -1;
+
+    forAll(triangles, t)
+    {
+        const FixedList<label, 3>& tri = triangles[t];
+        const vector2D& a = points[tri[0]];
+        const vector2D& b = points[tri[1]];
+        const vector2D& c = points[tri[2]];
+
+        index_.forEachCandidate
+        (
+            min(a, min(b, c)),
+            max(a, max(b, c)),
+            [&](const label celli)
+            {
+                if (lastTriangle_[celli] == t)
+                {
+                    return;
+                }
+                lastTriangle_[celli] = t;
+
+                polygon_.clear();
+                polygon_.append(a);
+                polygon_.append(b);
+                polygon_.append(c);
+                polygonClipping::clipConvex
+                (
+                    polygon_,
+                    &cellVertices_[cellStart_[celli]],
+                    cellStart_[celli + 1] - cellStart_[celli],
+                    work_
+                );
+
+                scalar area;
+                vector2D centroid;
+                polygonClipping::areaAndCentroid(polygon_, area, centroid);
+                if (area <= 0)
+                {
+                    return;
+                }
+
+                // The velocity is linear: its mean is its centroid value
+                const FixedList<scalar, 3> w = barycentric(centroid, a, b, c);
+                const vector2D u =
+                    w[0]*pointVelocities[tri[0]]
+                  + w[1]*pointVelocities[tri[1]]
+                  + w[2]*pointVelocities[tri[2]];
+
+                alphaSolid[celli] += area;
+                Usolid[celli] += area*u;
+
+                overlapCell_.append(celli);
+                overlapTriangle_.append(t);
+                overlapArea_.append(area);
+                overlapCentroid_.append(centroid);
+            }
+        );
+    }
+
+    forAll(alphaSolid, celli)
+    {
+        if (alphaSolid[celli] > 0)
+        {
+            Usolid[celli] /= alphaSolid[celli];
+            alphaSolid[celli] = min(alphaSolid[celli]/cellArea_[celli], 1.0);
+        }
+    }
+}
+
+
+void Foam::solidProjection::distributeToPoints
+(
+    const UList<vector2D>& cellForce,
+    const scalarField& alphaSolid,
+    const UList<vector2D>& points,
+    const UList<FixedList<label, 3>>& triangles,
+    List<vector2D>& pointForces
+) const
+{
+    forAll(overlapCell_, o)
+    {
+        const label celli = overlapCell_[o];
+        const scalar solidArea = alphaSolid[celli]*cellArea_[celli];
+        if (solidArea <= 0)
+        {
+            continue;
+        }
+        // Transpose of the velocity average of project()
+        const vector2D f = cellForce[celli]*(overlapArea_[o]/solidArea);
+        const FixedList<label, 3>& tri = triangles[overlapTriangle_[o]];
+        const FixedList<scalar, 3> w = barycentric
+        (
+            overlapCentroid_[o],
+            points[tri[0]],
+            points[tri[1]],
+            points[tri[2]]
+        );
+        for (label k = 0; k < 3; ++k)
+        {
+            pointForces[tri[k]] += w[k]*f;
+        }
+    }
+}
+
+
+// ************************************************************************* //
