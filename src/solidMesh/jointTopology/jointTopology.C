@@ -15,9 +15,18 @@ License
 Foam::jointTopology::jointTopology(const triangleMesh& mesh)
 :
     nTriangles_(mesh.nTriangles()),
-    edgeJoint_(3*mesh.nTriangles(), -1)
+    edgeJoint_(3*mesh.nTriangles(), -1),
+    nodeVertex_(3*mesh.nTriangles()),
+    initialPoints_(mesh.points())
 {
     const List<triangleVertices>& tris = mesh.triangles();
+    forAll(tris, t)
+    {
+        for (label k = 0; k < 3; ++k)
+        {
+            nodeVertex_[node(t, k)] = tris[t][k];
+        }
+    }
 
     // First triangle edge (3t + k) seen on each continuous edge
     EdgeMap<label> firstEdge(3*tris.size());

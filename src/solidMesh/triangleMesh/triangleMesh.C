@@ -292,6 +292,11 @@ Foam::label Foam::triangleMesh::findPatch(const word& name) const
 
 Foam::dictionary Foam::triangleMesh::toDict() const
 {
+    // Entries are stored as tokens printed with the default precision (6
+    // digits): print the points with enough digits to read back exactly
+    const unsigned oldPrecision = IOstream::defaultPrecision();
+    IOstream::defaultPrecision(max(oldPrecision, 17u));
+
     dictionary dict;
     dict.add("materials", materials_);
     dict.add("points", points_);
@@ -305,6 +310,8 @@ Foam::dictionary Foam::triangleMesh::toDict() const
         bdict.add(patchNames_[patchi], pdict);
     }
     dict.add("boundary", bdict);
+
+    IOstream::defaultPrecision(oldPrecision);
     return dict;
 }
 
@@ -328,7 +335,23 @@ void Foam::triangleMesh::write
         ),
         toDict()
     );
-    dict.writeObject(fmt, IOstream::currentVersion, IOstream::UNCOMPRESSED, true);
+    // Enough digits for the points to read back exactly (the default of
+    // 6 would move points, and could make thin triangles inverted)
+    const unsigned oldPrecision = IOstream::defaultPrecision();
+    IOstream::defaultPrecision(max(oldPrecision, 17u));
+    // ASCII always: OpenFOAM v1912 cannot read binary lists back from
+    // dictionary entries (ITstream::readRaw is not implemented)
+    if (fmt == IOstream::BINARY)
+    {
+        WarningInFunction
+            << "constant/" << meshFileName << " is written in ascii: binary"
+            << " dictionary entries cannot be read back" << endl;
+    }
+    dict.writeObject
+    (
+        IOstream::ASCII, IOstream::currentVersion, IOstream::UNCOMPRESSED, true
+    );
+    IOstream::defaultPrecision(oldPrecision);
 }
 
 

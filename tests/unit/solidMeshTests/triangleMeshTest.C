@@ -53,3 +53,22 @@ TEST(triangleMesh, rejectsMissingEntry)
     const dictionary dict(is);
     EXPECT_THROW(triangleMesh mesh(dict), Foam::error);
 }
+
+TEST(triangleMesh, dictionaryRoundTripIsExactForAnyDouble)
+{
+    // Points that 6 printed digits would move (the OpenFOAM default)
+    List<vector2D> pts({{0, 0}, {1.0/3, 0}, {1.0/3, 2.0/7}, {1e-9/3, 0.123456789012345}});
+    List<triangleVertices> tris({triangleVertices({0, 1, 2}), triangleVertices({0, 2, 3})});
+    const triangleMesh mesh(pts, tris, labelList(2, Zero), wordList({"rock"}));
+    const dictionary dict(mesh.toDict());
+    EXPECT_EQ(IOstream::defaultPrecision(), 6u);    // restored
+    // As write() does: the dictionary printed with 17 digits
+    IOstream::defaultPrecision(17);
+    OStringStream os;
+    IOstream::defaultPrecision(6);
+    os << dict;
+    IStringStream is(os.str());
+    const triangleMesh back{dictionary(is)};
+    EXPECT_EQ(back.points(), mesh.points());
+    EXPECT_EQ(back.area(0), mesh.area(0));
+}

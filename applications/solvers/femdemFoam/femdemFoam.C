@@ -1,0 +1,372 @@
+/*---------------------------------------------------------------------------*\
+  jwlIbFoam: blast in fractured solids, built on OpenFOAM v1912
+-------------------------------------------------------------------------------
+License
+    GNU General Public License v3 or later (as OpenFOAM).
+
+Application
+    femdemFoam
+
+Group
+    grpSolidSolvers
+
+Description
+    Solid-only FEMDEM solver (2D plane strain): triangles, cohesive joints,
+    contact (libfemdem's femdemSolid). Reads constant/solidMesh,
+    constant/femdemProperties and system/controlDict. Each controlDict step
+    deltaT is sub-cycled with the solid's stable step.
+
+    Output:
+    - <time>/femdemState at write times: the full state at full precision
+      (a run restarted from it is bit-exact);
+    - VTK/femdem.vtu.series (+ .pvd): the continuous view of the solid with
+      stress, velocity, damage, material, fragment; VTK/cracks_<i>.vtp: the
+      broken joints as lines;
+    - postProcessing/femdem/<startTime>/: energy.dat (energy budget),
+      fragments.dat, reactions.dat (reaction forces of the listed patches),
+      crackEvents.dat (each broken joint once, with the log time),
+      cracks_<time>.dat at write times and cracks.dat at the end (broken
+      joints: x0 y0 x1 y1 of their initial positions).
+
+    femdemProperties, besides femdemSolid's entries:
+    \verbatim
+    output
+    {
+        logInterval   1e-5;        // energy/fragment/reaction log [s]
+                                   // (default: every controlDict step)
+        vtk           true;        // VTK series at write times
+        reactions     (top bottom);// patches with fixed/velocity conditions
+    }
+    \endverbatim
+    trackEnergy defaults to true in femdemFoam.
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "IOdictionary.H"
+#include "OFstream.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+#include "femdemSolid.H"
+#include "contactLaw.H"
+#include "solidVtkWriter.H"
+#include <cmath>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+void writeHeader(Ostream& os, const word& object)
+{
+    os  << "FoamFile" << nl << "{" << nl
+        << "    version     2.0;" << nl
+        << "    format      ascii;" << nl
+        << "    class       dictionary;" << nl
+        << "    object      " << object << ";" << nl
+        << "}" << nl << nl;
+}
+
+
+void writeVtk
+(
+    solidVtkWriter& writer,
+    const femdemSolid& solid,
+    const fileName& vtkDir,
+    const scalar time
+)
+{
+    const continuousView& view = solid.view();
+    writer.beginStep(time, view.points(), view.triangles());
+    writer.addTriangleField("stress", solid.stress());
+    writer.addTriangleField("velocity", solid.triangleVelocity());
+    writer.addTriangleField("damage", solid.triangleDamage());
+    writer.addTriangleField("material", solid.triangleMaterial());
+    writer.addTriangleField("fragment", view.fragmentOfTriangle());
+    writer.endStep();
+
+    // Broken joints as lines along their mid-line
+    const List<jointNodeList>& jn = solid.topology().jointNodes();
+    DynamicList<vector2D> pts;
+    DynamicList<edge> lines;
+    DynamicList<scalar> length;
+    forAll(jn, j)
+    {
+        if (!solid.jointBroken()[j]) continue;
+        const jointNodeList& n = jn[j];
+        const label i = pts.size();
+        pts.append(0.5*(solid.x()[n[0]] + solid.x()[n[2]]));
+        pts.append(0.5*(solid.x()[n[1]] + solid.x()[n[3]]));
+        lines.append(edge(i, i + 1));
+        length.append(solid.jointLength0()[j]);
+    }
+    solidVtkWriter::writeLines
+    (
+        vtkDir/("cracks_" + Foam::name(writer.nSteps() - 1) + ".vtp"),
+        pts,
+        edgeList(lines),
+        length
+    );
+}
+
+
+void writeCracks(const femdemSolid& solid, const fileName& file)
+{
+    OFstream os(file);
+    os.precision(10);
+    os  << "# broken joints: x0 y0 x1 y1 (initial positions of face p)" << nl;
+    const List<jointNodeList>& jn = solid.topology().jointNodes();
+    const List<vector2D>& X0 = solid.topology().initialPoints();
+    const labelList& vertex = solid.topology().nodeVertex();
+    forAll(jn, j)
+    {
+        if (!solid.jointBroken()[j]) continue;
+        const vector2D& a = X0[vertex[jn[j][0]]];
+        const vector2D& b = X0[vertex[jn[j][1]]];
+        os  << a.x() << ' ' << a.y() << ' ' << b.x() << ' ' << b.y() << nl;
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Solid-only FEMDEM solver (2D plane strain): triangles, cohesive"
+        " joints, contact"
+    );
+    argList::noParallel();
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    IOdictionary properties
+    (
+        IOobject
+        (
+            "femdemProperties",
+            runTime.constant(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    );
+    dictionary solidDict(properties);
+    if (!solidDict.found("trackEnergy"))
+    {
+        solidDict.add("trackEnergy", true);
+    }
+
+    const triangleMesh mesh = triangleMesh::New(runTime);
+    femdemSolid solid(mesh, solidDict);
+
+    const dictionary outDict = properties.subOrEmptyDict("output");
+    const scalar logInterval =
+        outDict.getOrDefault<scalar>("logInterval", runTime.deltaTValue());
+    if (!(logInterval > 0))
+    {
+        FatalIOErrorInFunction(properties)
+            << "entry 'output/logInterval' must be positive, got "
+            << logInterval << exit(FatalIOError);
+    }
+    const bool doVtk = outDict.getOrDefault<bool>("vtk", true);
+    const wordList reactionPatches =
+        outDict.getOrDefault<wordList>("reactions", wordList());
+    for (const word& p : reactionPatches)
+    {
+        bool found = false;
+        for (const femdemSolid::boundaryCondition& bc : solid.boundaryConditions())
+        {
+            if
+            (
+                bc.patchName == p
+             && (
+                    bc.type == femdemSolid::boundaryCondition::FIXED
+                 || bc.type == femdemSolid::boundaryCondition::VELOCITY
+                )
+            )
+            {
+                found = true;
+            }
+        }
+        if (!found)
+        {
+            FatalIOErrorInFunction(properties)
+                << "entry 'output/reactions': patch '" << p << "' has no"
+                << " fixed or velocity boundary condition"
+                << exit(FatalIOError);
+        }
+    }
+
+    // Restart from the state of the start time, if written
+    const fileName stateFile = runTime.timePath()/"femdemState";
+    if (isFile(stateFile))
+    {
+        IFstream is(stateFile);
+        solid.readState(dictionary(is));
+        Info<< "Restarted from " << stateFile << " (solid time "
+            << solid.time() << ", " << solid.nBrokenJoints()
+            << " broken joints)" << nl << endl;
+    }
+    else
+    {
+        solid.resetEnergyBudget();
+    }
+
+    Info<< "FEMDEM solid: " << solid.nTriangles() << " triangles, "
+        << solid.nJoints() << " joints, " << solid.materials().size()
+        << " material(s)" << nl
+        << "Stable time step: " << solid.stableTimeStep() << " s ("
+        << label(std::ceil(runTime.deltaTValue()/solid.stableTimeStep()))
+        << " sub-steps per deltaT)" << nl << endl;
+
+    // Logs
+    const fileName postDir =
+        runTime.path()/"postProcessing"/"femdem"/runTime.timeName();
+    mkDir(postDir);
+    OFstream energyLog(postDir/"energy.dat");
+    OFstream fragmentLog(postDir/"fragments.dat");
+    OFstream reactionLog(postDir/"reactions.dat");
+    OFstream crackLog(postDir/"crackEvents.dat");
+    crackLog.precision(10);
+    crackLog
+        << "# joints as they break (time of the log after the breakage):"
+        << " time x0 y0 x1 y1 (initial positions)" << nl;
+    boolList crackLogged(solid.nJoints(), false);
+    energyLog.precision(10);
+    reactionLog.precision(10);
+    fragmentLog.precision(10);
+    energyLog
+        << "# time kinetic elastic jointStored fracture damping contact"
+        << " gravity external initial residual" << nl;
+    fragmentLog
+        << "# time nFragments nBrokenJoints largestMassFraction"
+        << " maxFragmentSpeed meanFragmentMass" << nl;
+    reactionLog << "# time";
+    for (const word& p : reactionPatches)
+    {
+        reactionLog << " " << p << "_Fx " << p << "_Fy";
+    }
+    reactionLog << nl;
+
+    autoPtr<solidVtkWriter> vtkWriter;
+    const fileName vtkDir = runTime.path()/"VTK";
+    if (doVtk)
+    {
+        vtkWriter.reset(new solidVtkWriter(vtkDir, "femdem"));
+        writeVtk(*vtkWriter, solid, vtkDir, runTime.value());
+    }
+
+    auto logState = [&]()
+    {
+        const scalar t = runTime.value();
+        const femdemSolid::energyBudget e = solid.energies();
+        if (!std::isfinite(e.kinetic) || !std::isfinite(e.elastic))
+        {
+            FatalErrorInFunction
+                << "the solid diverged at time " << t << " (kinetic energy "
+                << e.kinetic << "): lower timeStepSafety in "
+                << properties.objectPath() << exit(FatalError);
+        }
+        energyLog
+            << t << ' ' << e.kinetic << ' ' << e.elastic << ' '
+            << e.jointStored << ' ' << e.fracture << ' ' << e.damping << ' '
+            << e.contact << ' ' << e.gravity << ' ' << e.external << ' '
+            << e.initial << ' ' << e.residual() << nl;
+
+        const femdemSolid::fragmentData fr = solid.fragments();
+        scalar mTotal = 0, mMax = 0, vMax = 0;
+        forAll(fr.mass, i)
+        {
+            mTotal += fr.mass[i];
+            mMax = max(mMax, fr.mass[i]);
+            vMax = max(vMax, mag(fr.velocity[i]));
+        }
+        fragmentLog
+            << t << ' ' << fr.mass.size() << ' ' << solid.nBrokenJoints()
+            << ' ' << mMax/mTotal << ' ' << vMax << ' '
+            << mTotal/fr.mass.size() << nl;
+
+        reactionLog << t;
+        for (const word& p : reactionPatches)
+        {
+            const vector2D R = solid.reaction(p);
+            reactionLog << ' ' << R.x() << ' ' << R.y();
+        }
+        reactionLog << nl;
+
+        // Joints broken since the last log
+        const List<jointNodeList>& jn = solid.topology().jointNodes();
+        const List<vector2D>& X0 = solid.topology().initialPoints();
+        const labelList& vertex = solid.topology().nodeVertex();
+        forAll(crackLogged, j)
+        {
+            if (solid.jointBroken()[j] && !crackLogged[j])
+            {
+                crackLogged[j] = true;
+                const vector2D& a = X0[vertex[jn[j][0]]];
+                const vector2D& b = X0[vertex[jn[j][1]]];
+                crackLog
+                    << t << ' ' << a.x() << ' ' << a.y() << ' ' << b.x()
+                    << ' ' << b.y() << nl;
+            }
+        }
+
+        const scalar input = e.initial + e.external + e.gravity;
+        Info<< "    energy: kinetic " << e.kinetic << " elastic " << e.elastic
+            << " fracture " << e.fracture << " damping " << e.damping
+            << " contact " << e.contact << " input " << input
+            << " residual " << e.residual() << nl
+            << "    fragments " << fr.mass.size() << ", broken joints "
+            << solid.nBrokenJoints() << endl;
+    };
+
+    scalar nextLog = runTime.value() + logInterval;
+    const scalar eps = 1e-9*runTime.deltaTValue();
+
+    Info<< "Starting time loop" << nl << endl;
+    while (runTime.run())
+    {
+        ++runTime;
+        const label nSub = solid.advance(runTime.deltaTValue());
+
+        Info<< "Time = " << runTime.timeName() << "  sub-steps " << nSub
+            << "  broken joints " << solid.nBrokenJoints() << endl;
+
+        if (runTime.value() >= nextLog - eps)
+        {
+            logState();
+            while (nextLog <= runTime.value() + eps) nextLog += logInterval;
+        }
+
+        if (runTime.writeTime())
+        {
+            mkDir(runTime.timePath());
+            OFstream os(runTime.timePath()/"femdemState");
+            writeHeader(os, "femdemState");
+            solid.writeState(os);
+            writeCracks(solid, postDir/("cracks_" + runTime.timeName() + ".dat"));
+            if (doVtk)
+            {
+                writeVtk(*vtkWriter, solid, vtkDir, runTime.value());
+            }
+            Info<< "    wrote " << runTime.timePath()/"femdemState" << endl;
+        }
+    }
+
+    writeCracks(solid, postDir/"cracks.dat");
+    Info<< nl << "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
+        << nl << "End" << nl << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,544 @@
+/*---------------------------------------------------------------------------*\
+  jwlIbFoam: blast in fractured solids, built on OpenFOAM v1912
+-------------------------------------------------------------------------------
+License
+    GNU General Public License v3 or later (as OpenFOAM).
+
+Application
+    femdemMesh
+
+Group
+    grpMeshGenerationUtilities
+
+Description
+    Meshes the 2D solids described in system/femdemMeshDict with CGAL's
+    constrained Delaunay mesher (smallest angle and local size bounds) and
+    writes the continuous solid mesh constant/solidMesh (see triangleMesh).
+
+    \verbatim
+    targetSize  0.02;           // largest edge length away from refinements
+    minAngle    20;             // degrees (CGAL terminates for <= 20.7)
+    solids                      // later solids win where solids overlap
+    {
+        rock  { type rectangle; min (0 0); max (1 0.5); material granite;
+                patches (bottom right top left); }  // or: patch walls;
+        slab  { type polygon; points ((0 0) (1 0) (0.5 1)); material rock;
+                patches (base right left); }         // one name per side
+        disk  { type circle; centre (2 0); radius 0.2; material steel;
+                patch rim; nSegments 64; }           // nSegments optional
+    }
+    holes                       // not meshed (boreholes)
+    {
+        borehole { type circle; centre (0.5 0.25); radius 0.02; }
+                                // patch defaults to the hole's name
+    }
+    refinement                  // optional: smaller triangles near features
+    {
+        hole { type circle; centre (0.5 0.25); radius 0.02;
+               size 0.004; distance 0.01; grading 0.3; }
+        tip  { type point; point (0.8 0.25); size 0.005; }
+        line { type polyline; points ((0 0) (1 0.5)); size 0.01; }
+    }
+    \endverbatim
+    Size at a point: the smallest of targetSize and, for each refinement,
+    size + grading*max(0, distance to the feature - distance) (distance
+    and grading default to 0 and 0.3). Sides without a patch name belong to
+    the patch 'walls'.
+
+Usage
+    femdemMesh [-case dir] [-dict file] [-renumber] [-vtk]
+
+    -renumber   METIS renumbering of triangles and points (blocks of 32)
+    -vtk        also write VTK/solidMesh_0.vtu (materials, quality)
+
+\*---------------------------------------------------------------------------*/
+
+#include "cgalTriangulator.H"
+
+#include "argList.H"
+#include "Time.H"
+#include "IOdictionary.H"
+#include "clockTime.H"
+#include "triangleMesh.H"
+#include "jointTopology.H"
+#include "solidMeshRenumber.H"
+#include "solidMeshQuality.H"
+#include "solidVtkWriter.H"
+#include "mathematicalConstants.H"
+#include "HashTable.H"
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A closed polygon with a patch per side and a material (solids)
+struct shape
+{
+    word name;
+    List<vector2D> points;
+    labelList sidePatch;
+    label material;
+};
+
+//- A refinement feature: a polyline (one point: a point) or a circle
+struct refinementFeature
+{
+    List<vector2D> points;
+    bool circle;
+    vector2D centre;
+    scalar radius, size, distance, grading;
+
+    scalar distanceTo(const vector2D& x) const
+    {
+        if (circle)
+        {
+            return mag(mag(x - centre) - radius);
+        }
+        scalar d = mag(x - points[0]);
+        for (label i = 1; i < points.size(); ++i)
+        {
+            const vector2D a = points[i - 1], ab = points[i] - a;
+            const scalar len2 = magSqr(ab);
+            scalar s = len2 > 0 ? ((x - a) & ab)/len2 : 0;
+            s = min(max(s, scalar(0)), scalar(1));
+            d = min(d, mag(x - (a + s*ab)));
+        }
+        return d;
+    }
+};
+
+bool inside(const List<vector2D>& poly, const vector2D& p)
+{
+    // Crossing number
+    bool in = false;
+    for (label i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
+    {
+        const vector2D& a = poly[i];
+        const vector2D& b = poly[j];
+        if
+        (
+            (a.y() > p.y()) != (b.y() > p.y())
+         && p.x() < (b.x() - a.x())*(p.y() - a.y())/(b.y() - a.y()) + a.x()
+        )
+        {
+            in = !in;
+        }
+    }
+    return in;
+}
+
+
+label patchIndex(DynamicList<word>& patchNames, const word& name)
+{
+    label i = patchNames.find(name);
+    if (i < 0)
+    {
+        i = patchNames.size();
+        patchNames.append(name);
+    }
+    return i;
+}
+
+
+//- Read one solid or hole; sizeAt gives the local size for circles
+shape readShape
+(
+    const dictionary& dict,
+    const word& defaultPatch,
+    DynamicList<word>& patchNames,
+    const std::function<scalar(const vector2D&)>& sizeAt
+)
+{
+    shape s;
+    s.name = dict.dictName();
+    s.material = -1;
+    const word type = dict.get<word>("type");
+
+    if (type == "rectangle")
+    {
+        const vector2D lo = dict.get<vector2D>("min");
+        const vector2D hi = dict.get<vector2D>("max");
+        if (!(hi.x() > lo.x() && hi.y() > lo.y()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "rectangle " << s.name << ": max " << hi
+                << " must exceed min " << lo << " in x and y"
+                << exit(FatalIOError);
+        }
+        s.points = List<vector2D>
+        ({
+            lo, vector2D(hi.x(), lo.y()), hi, vector2D(lo.x(), hi.y())
+        });
+    }
+    else if (type == "polygon")
+    {
+        s.points = dict.get<List<vector2D>>("points");
+        if (s.points.size() < 3)
+        {
+            FatalIOErrorInFunction(dict)
+                << "polygon " << s.name << " has " << s.points.size()
+                << " points; at least 3 are needed" << exit(FatalIOError);
+        }
+    }
+    else if (type == "circle")
+    {
+        const vector2D c = dict.get<vector2D>("centre");
+        const scalar r = dict.get<scalar>("radius");
+        if (!(r > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "circle " << s.name << ": radius " << r
+                << " must be positive" << exit(FatalIOError);
+        }
+        // Chords no longer than the local size anywhere on the circle
+        scalar h = GREAT;
+        for (label i = 0; i < 360; ++i)
+        {
+            const scalar a = constant::mathematical::twoPi*i/360;
+            h = min(h, sizeAt(c + r*vector2D(Foam::cos(a), Foam::sin(a))));
+        }
+        const label n = dict.getOrDefault<label>
+        (
+            "nSegments",
+            max(label(8), label(ceil(constant::mathematical::twoPi*r/h)))
+        );
+        if (n < 3)
+        {
+            FatalIOErrorInFunction(dict)
+                << "circle " << s.name << ": nSegments " << n << " < 3"
+                << exit(FatalIOError);
+        }
+        s.points.setSize(n);
+        forAll(s.points, i)
+        {
+            const scalar a = constant::mathematical::twoPi*i/n;
+            s.points[i] = c + r*vector2D(Foam::cos(a), Foam::sin(a));
+        }
+    }
+    else
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown type " << type << " of " << s.name
+            << "; valid types: (rectangle polygon circle)"
+            << exit(FatalIOError);
+    }
+
+    // Patches: one name for all sides, or a name per side
+    s.sidePatch.setSize(s.points.size());
+    if (dict.found("patches") && type != "circle")
+    {
+        const wordList names = dict.get<wordList>("patches");
+        if (names.size() != s.points.size())
+        {
+            FatalIOErrorInFunction(dict)
+                << s.name << ": entry 'patches' has " << names.size()
+                << " names for " << s.points.size() << " sides"
+                << exit(FatalIOError);
+        }
+        forAll(names, i)
+        {
+            s.sidePatch[i] = patchIndex(patchNames, names[i]);
+        }
+    }
+    else
+    {
+        s.sidePatch = patchIndex
+        (
+            patchNames,
+            dict.getOrDefault<word>("patch", defaultPatch)
+        );
+    }
+    return s;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Mesh the 2D solids of system/femdemMeshDict with CGAL and write"
+        " constant/solidMesh"
+    );
+    argList::noParallel();
+    argList::addOption("dict", "file", "Alternative femdemMeshDict");
+    argList::addBoolOption("renumber", "METIS renumbering for locality");
+    argList::addBoolOption("vtk", "Also write VTK/solidMesh_0.vtu");
+
+    argList args(argc, argv);
+    Time runTime(args.rootPath(), args.caseName(), "system", "constant", false, false);
+
+    const fileName dictFile =
+        args.getOrDefault<fileName>("dict", runTime.system()/"femdemMeshDict");
+    IOdictionary meshDict
+    (
+        IOobject
+        (
+            dictFile.isAbsolute() ? dictFile : runTime.path()/dictFile,
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+
+    clockTime clock;
+
+    const scalar targetSize = meshDict.get<scalar>("targetSize");
+    const scalar minAngle = meshDict.getOrDefault<scalar>("minAngle", 20);
+    if (!(targetSize > 0))
+    {
+        FatalIOErrorInFunction(meshDict)
+            << "targetSize " << targetSize << " must be positive"
+            << exit(FatalIOError);
+    }
+    if (!(minAngle > 0 && minAngle <= 35))
+    {
+        FatalIOErrorInFunction(meshDict)
+            << "minAngle " << minAngle << " must be in (0, 35] degrees"
+            << " (CGAL guarantees termination up to 20.7)"
+            << exit(FatalIOError);
+    }
+
+    if (minAngle > 20.7)
+    {
+        Info<< "Note: minAngle " << minAngle << " > 20.7 degrees: CGAL does"
+            << " not guarantee that the refinement terminates" << nl;
+    }
+
+    // Size function
+    List<refinementFeature> features;
+    if (meshDict.found("refinement"))
+    {
+        const dictionary& rdict = meshDict.subDict("refinement");
+        for (const word& key : rdict.toc())
+        {
+            const dictionary& d = rdict.subDict(key);
+            refinementFeature f;
+            const word type = d.get<word>("type");
+            f.circle = (type == "circle");
+            f.radius = 0;
+            if (type == "point")
+            {
+                f.points = List<vector2D>(1, d.get<vector2D>("point"));
+            }
+            else if (type == "polyline")
+            {
+                f.points = d.get<List<vector2D>>("points");
+            }
+            else if (f.circle)
+            {
+                f.centre = d.get<vector2D>("centre");
+                f.radius = d.get<scalar>("radius");
+            }
+            else
+            {
+                FatalIOErrorInFunction(d)
+                    << "Unknown refinement type " << type
+                    << "; valid types: (point polyline circle)"
+                    << exit(FatalIOError);
+            }
+            if (!f.circle && f.points.empty())
+            {
+                FatalIOErrorInFunction(d)
+                    << "refinement " << key << " has no points"
+                    << exit(FatalIOError);
+            }
+            f.size = d.get<scalar>("size");
+            f.distance = d.getOrDefault<scalar>("distance", 0);
+            f.grading = d.getOrDefault<scalar>("grading", 0.3);
+            if (!(f.size > 0) || f.grading < 0 || f.distance < 0)
+            {
+                FatalIOErrorInFunction(d)
+                    << "refinement " << key << ": size must be positive,"
+                    << " distance and grading not negative"
+                    << exit(FatalIOError);
+            }
+            features.append(f);
+        }
+    }
+    auto sizeAt = [&](const vector2D& x)
+    {
+        scalar h = targetSize;
+        for (const refinementFeature& f : features)
+        {
+            h = min(h, f.size + f.grading*max(f.distanceTo(x) - f.distance, 0));
+        }
+        return h;
+    };
+
+    // Shapes
+    DynamicList<word> patchNames;
+    DynamicList<word> materials;
+    DynamicList<shape> solids, holes;
+    {
+        const dictionary& sdict = meshDict.subDict("solids");
+        for (const word& key : sdict.toc())
+        {
+            const dictionary& d = sdict.subDict(key);
+            shape s = readShape(d, "walls", patchNames, sizeAt);
+            const word material = d.get<word>("material");
+            s.material = materials.find(material);
+            if (s.material < 0)
+            {
+                s.material = materials.size();
+                materials.append(material);
+            }
+            solids.append(s);
+        }
+        if (solids.empty())
+        {
+            FatalIOErrorInFunction(meshDict)
+                << "No solids in entry 'solids'" << exit(FatalIOError);
+        }
+    }
+    if (meshDict.found("holes"))
+    {
+        const dictionary& hdict = meshDict.subDict("holes");
+        for (const word& key : hdict.toc())
+        {
+            holes.append
+            (
+                readShape(hdict.subDict(key), key, patchNames, sizeAt)
+            );
+        }
+    }
+
+    // CGAL input
+    cgalTriangulator::domain input;
+    for (const List<shape>* group : {&solids, &holes})
+    {
+        for (const shape& s : *group)
+        {
+            const label start = input.x.size();
+            forAll(s.points, i)
+            {
+                input.x.push_back(s.points[i].x());
+                input.y.push_back(s.points[i].y());
+                input.segmentStart.push_back(start + i);
+                input.segmentEnd.push_back(start + (i + 1) % s.points.size());
+                input.segmentTag.push_back(s.sidePatch[i]);
+            }
+        }
+    }
+    input.region = [&](double x, double y)
+    {
+        const vector2D p(x, y);
+        for (const shape& h : holes)
+        {
+            if (inside(h.points, p)) return label(-1);
+        }
+        for (label i = solids.size() - 1; i >= 0; --i)
+        {
+            if (inside(solids[i].points, p)) return solids[i].material;
+        }
+        return label(-1);
+    };
+    input.size = [&](double x, double y) { return sizeAt(vector2D(x, y)); };
+    input.minAngleDegrees = minAngle;
+
+    Info<< "Meshing " << solids.size() << " solids, " << holes.size()
+        << " holes, " << input.segmentStart.size() << " boundary segments,"
+        << " target size " << targetSize << ", smallest angle " << minAngle
+        << " degrees" << endl;
+
+    cgalTriangulator::mesh cgalMesh;
+    try
+    {
+        cgalMesh = cgalTriangulator::triangulate(input);
+    }
+    catch (const std::exception& e)
+    {
+        FatalIOErrorInFunction(meshDict)
+            << "CGAL meshing failed: " << e.what() << exit(FatalIOError);
+    }
+    const scalar meshTime = clock.timeIncrement();
+
+    // To the continuous solid mesh
+    List<vector2D> points(cgalMesh.x.size());
+    forAll(points, i)
+    {
+        points[i] = vector2D(cgalMesh.x[i], cgalMesh.y[i]);
+    }
+    List<triangleVertices> triangles(cgalMesh.triangleRegion.size());
+    labelList triangleMaterials(triangles.size());
+    forAll(triangles, t)
+    {
+        triangles[t] = triangleVertices
+        ({
+            cgalMesh.triangles[3*t],
+            cgalMesh.triangles[3*t + 1],
+            cgalMesh.triangles[3*t + 2]
+        });
+        triangleMaterials[t] = cgalMesh.triangleRegion[t];
+    }
+    List<DynamicList<edge>> patchEdges(patchNames.size());
+    label nUnnamed = 0;
+    forAll(cgalMesh.edgeTag, e)
+    {
+        const edge ed(cgalMesh.edgeStart[e], cgalMesh.edgeEnd[e]);
+        if (cgalMesh.edgeTag[e] >= 0)
+        {
+            patchEdges[cgalMesh.edgeTag[e]].append(ed);
+        }
+        else
+        {
+            ++nUnnamed;
+        }
+    }
+    List<edgeList> patches(patchNames.size());
+    forAll(patches, i)
+    {
+        patches[i].transfer(patchEdges[i]);
+    }
+
+    triangleMesh mesh
+    (
+        points, triangles, triangleMaterials, materials, patchNames, patches
+    );
+    if (args.found("renumber"))
+    {
+        const scalar before = solidMeshRenumber::localNeighbourFraction(mesh);
+        mesh = solidMeshRenumber::renumber(mesh);
+        Info<< "METIS renumbering: neighbours closer than 64 in index "
+            << 100*before << " % -> "
+            << 100*solidMeshRenumber::localNeighbourFraction(mesh) << " %"
+            << nl;
+    }
+    const jointTopology topo(mesh);
+    const scalar convertTime = clock.timeIncrement();
+
+    solidMeshQuality::report(mesh, Info);
+    Info<< "    joints: " << topo.nJoints() << nl
+        << "    boundary edges: " << topo.nBoundaryFaces()
+        << " (not in a named patch: " << nUnnamed << ")" << nl
+        << "Meshing time: " << meshTime << " s, conversion check: "
+        << convertTime << " s" << nl << endl;
+
+    mesh.write
+    (
+        runTime,
+        IOstream::ASCII
+    );
+    Info<< "Wrote " << runTime.constant()/triangleMesh::meshFileName
+        << " in " << clock.timeIncrement() << " s" << endl;
+
+    if (args.found("vtk"))
+    {
+        solidVtkWriter vtk(runTime.path()/"VTK", "solidMesh");
+        solidMeshQuality::writeVtk(mesh, vtk);
+        Info<< "Wrote " << vtk.stepFile(0) << endl;
+    }
+
+    Info<< "End" << endl;
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,121 @@
+/*---------------------------------------------------------------------------*\
+  jwlIbFoam: blast in fractured solids, built on OpenFOAM v1912
+-------------------------------------------------------------------------------
+License
+    GNU General Public License v3 or later (as OpenFOAM).
+
+Application
+    gmshToFemdem
+
+Group
+    grpMeshConversionUtilities
+
+Description
+    Converts a 2D gmsh mesh (.msh, ASCII 2.2 or 4.1) into the solid mesh
+    constant/solidMesh: physical surfaces -> materials, physical curves ->
+    boundary patches (see gmshReader). Nothing is written if the mesh is
+    rejected (unreadable, unsupported elements, inverted or degenerate
+    triangles, non-manifold edges).
+
+Usage
+    gmshToFemdem [-case dir] [-renumber] [-vtk] <file.msh>
+
+    -renumber   METIS renumbering of triangles and points (blocks of 32)
+    -vtk        also write VTK/solidMesh_0.vtu (materials, quality)
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "clockTime.H"
+#include "gmshReader.H"
+#include "jointTopology.H"
+#include "solidMeshQuality.H"
+#include "solidMeshRenumber.H"
+#include "solidVtkWriter.H"
+
+#include <fstream>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Convert a 2D gmsh mesh (.msh 2.2 or 4.1 ASCII) into constant/solidMesh"
+    );
+    argList::noParallel();
+    argList::addArgument("msh", "The gmsh mesh file");
+    argList::addBoolOption("renumber", "METIS renumbering for locality");
+    argList::addBoolOption("vtk", "Also write VTK/solidMesh_0.vtu");
+
+    argList args(argc, argv);
+    Time runTime(args.rootPath(), args.caseName(), "system", "constant", false, false);
+
+    fileName mshFile(args.get<fileName>(1));
+    if (!mshFile.isAbsolute() && !isFile(mshFile))
+    {
+        mshFile = runTime.path()/mshFile;
+    }
+
+    clockTime clock;
+    std::ifstream is(mshFile);
+    if (!is.good())
+    {
+        FatalErrorInFunction
+            << "Cannot open gmsh file " << mshFile << exit(FatalError);
+    }
+    gmshReader reader(is, mshFile);
+    triangleMesh mesh(reader.mesh());
+    Info<< "Read " << mshFile << " (format " << reader.version() << "): "
+        << mesh.nTriangles() << " triangles, " << mesh.materials().size()
+        << " materials, " << mesh.patchNames().size() << " patches" << nl;
+    if (reader.flipped())
+    {
+        Info<< "    " << reader.flipped() << " clockwise triangles turned"
+            << " counter-clockwise" << nl;
+    }
+    if (reader.droppedLines())
+    {
+        Info<< "    " << reader.droppedLines() << " lines of physical curves"
+            << " not on the boundary of the triangles were dropped" << nl;
+    }
+
+    if (args.found("renumber"))
+    {
+        const scalar before = solidMeshRenumber::localNeighbourFraction(mesh);
+        mesh = solidMeshRenumber::renumber(mesh);
+        Info<< "    METIS renumbering: neighbours closer than 64 in index "
+            << 100*before << " % -> "
+            << 100*solidMeshRenumber::localNeighbourFraction(mesh) << " %"
+            << nl;
+    }
+
+    // Non-manifold edges and overlapping neighbours stop here
+    const jointTopology topo(mesh);
+    solidMeshQuality::report(mesh, Info);
+    Info<< "    joints: " << topo.nJoints() << nl
+        << "Conversion time: " << clock.timeIncrement() << " s" << nl << endl;
+
+    mesh.write
+    (
+        runTime,
+        IOstream::ASCII
+    );
+    Info<< "Wrote " << runTime.constant()/triangleMesh::meshFileName << endl;
+
+    if (args.found("vtk"))
+    {
+        solidVtkWriter vtk(runTime.path()/"VTK", "solidMesh");
+        solidMeshQuality::writeVtk(mesh, vtk);
+        Info<< "Wrote " << vtk.stepFile(0) << endl;
+    }
+
+    Info<< "End" << endl;
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,184 @@
+/*---------------------------------------------------------------------------*\
+  jwlIbFoam: blast in fractured solids, built on OpenFOAM v1912
+-------------------------------------------------------------------------------
+License
+    GNU General Public License v3 or later (as OpenFOAM).
+
+Application
+    femdemBenchmark
+
+Description
+    Throughput and memory of libfemdem on one core:
+    - intact: a rectangle of >= 1e5 triangles (all joints intact) under
+      compression, with and without the contact search;
+    - fragmented: every joint broken, the triangles pressed together and
+      shaken so that contact is active between most neighbours.
+    Prints triangle-steps per CPU second and bytes per triangle (the state, the
+    joint topology and the contact work space included) on '>>' lines.
+
+Usage
+    femdemBenchmark [nx ny steps nxFragmented nyFragmented stepsFragmented]
+
+\*---------------------------------------------------------------------------*/
+
+#include "femdemSolid.H"
+#include "contactLaw.H"
+#include "IStringStream.H"
+#include "Random.H"
+#include <chrono>
+#include <ctime>
+#include <cstdio>
+
+using namespace Foam;
+
+namespace
+{
+
+dictionary props(const word& contact)
+{
+    IStringStream is
+    (
+        "cohesiveLaw munjiza; contactLaw " + contact + ";"
+        "materials { rock { E 19.5e9; nu 0.265; rho 2000;"
+        " tensileStrength 3.5e6; cohesion 17.6e6; frictionAngle 23;"
+        " GI 100; GII 1750; dampingRatio 0.1; } }"
+        "boundaryConditions { bottom { type fixed; }"
+        " top { type velocity; value (0 -0.5); } }"
+    );
+    return dictionary(is);
+}
+
+
+double seconds(const std::chrono::steady_clock::time_point& t0)
+{
+    return std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - t0
+    ).count();
+}
+
+
+void run
+(
+    const word& name,
+    femdemSolid& solid,
+    const label steps
+)
+{
+    solid.step();   // warm-up (allocates the contact work space)
+    // CPU time of the process (one thread): the machine may be shared
+    const std::clock_t c0 = std::clock();
+    const auto t0 = std::chrono::steady_clock::now();
+    for (label i = 0; i < steps; ++i) solid.step();
+    const double wall = seconds(t0);
+    const double dt = double(std::clock() - c0)/CLOCKS_PER_SEC;
+    const double rate = double(solid.nTriangles())*steps/dt;
+    const double bytes = double(solid.memoryBytes())/solid.nTriangles();
+    std::printf
+    (
+        ">> %s: %ld triangles, %ld joints (%ld broken), %ld steps in %.2f s"
+        " CPU (%.2f s wall):"
+        " %.3g triangle-steps/s/core, %.0f bytes/triangle,"
+        " contact pairs: %ld candidates, %ld active\n",
+        name.c_str(), long(solid.nTriangles()), long(solid.nJoints()),
+        long(solid.nBrokenJoints()), long(steps), dt, wall, rate, bytes,
+        long(solid.contact().nCandidatePairs()),
+        long(solid.contact().nActivePairs())
+    );
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    const label nx = argc > 1 ? atoi(argv[1]) : 250;
+    const label ny = argc > 2 ? atoi(argv[2]) : 200;
+    const label steps = argc > 3 ? atoi(argv[3]) : 200;
+    const label fx = argc > 4 ? atoi(argv[4]) : 100;
+    const label fy = argc > 5 ? atoi(argv[5]) : 100;
+    const label fsteps = argc > 6 ? atoi(argv[6]) : 200;
+
+    // Intact: 0.5 x 0.4 m, compressed from the top
+    {
+        const triangleMesh mesh = triangleMesh::rectangle
+        (
+            vector2D(0, 0), vector2D(0.5, 0.4), nx, ny, "rock"
+        );
+        femdemSolid noContact(mesh, props("none"));
+        run("intact, contactLaw none", noContact, steps);
+        femdemSolid solid(mesh, props("potential"));
+        run("intact, contactLaw potential", solid, steps);
+    }
+
+    // Blocky: joints on every 4th grid line broken (fragments of 4 x 4
+    // cells = 32 triangles), random block velocities, pressed
+    {
+        const triangleMesh mesh = triangleMesh::rectangle
+        (
+            vector2D(0, 0), vector2D(0.4, 0.4), 2*fx, 2*fy, "rock"
+        );
+        femdemSolid solid(mesh, props("potential"));
+        const scalar h = 0.4/(2*fx);
+        auto onLine = [h](const scalar c)
+        {
+            const scalar r = c/(4*h);
+            return mag(r - std::round(r)) < 1e-6;
+        };
+        const List<vector2D> X(solid.x());
+        forAll(solid.topology().jointNodes(), j)
+        {
+            const jointNodeList& n = solid.topology().jointNodes()[j];
+            const vector2D& a = X[n[0]];
+            const vector2D& b = X[n[1]];
+            if
+            (
+                (onLine(a.x()) && onLine(b.x()) && mag(a.x() - b.x()) < 1e-12)
+             || (onLine(a.y()) && onLine(b.y()) && mag(a.y() - b.y()) < 1e-12)
+            )
+            {
+                solid.setBroken(j);
+            }
+        }
+        Random rnd(4321);
+        const femdemSolid::fragmentData fr = solid.fragments();
+        List<vector2D> vFrag(fr.mass.size());
+        for (vector2D& v : vFrag)
+        {
+            v = vector2D(rnd.sample01<scalar>() - 0.5, rnd.sample01<scalar>() - 0.5);
+        }
+        const labelList& fragOf = solid.view().fragmentOfTriangle();
+        forAll(solid.v(), n) solid.vRef()[n] = vFrag[fragOf[n/3]];
+        for (label i = 0; i < 50; ++i) solid.step();
+        run
+        (
+            "blocky (" + Foam::name(fr.mass.size()) + " fragments of 32 triangles),"
+            " contactLaw potential",
+            solid,
+            fsteps
+        );
+    }
+
+    // Fragmented: all joints broken, random velocities, pressed
+    {
+        const triangleMesh mesh = triangleMesh::rectangle
+        (
+            vector2D(0, 0), vector2D(0.2, 0.2), fx, fy, "rock"
+        );
+        femdemSolid solid(mesh, props("potential"));
+        for (label j = 0; j < solid.nJoints(); ++j) solid.setBroken(j);
+        Random rnd(1234);
+        forAll(solid.v(), n)
+        {
+            solid.vRef()[n] =
+                vector2D(rnd.sample01<scalar>() - 0.5, rnd.sample01<scalar>() - 0.5);
+        }
+        // Let the fragments come into contact
+        for (label i = 0; i < 50; ++i) solid.step();
+        run("fragmented, contactLaw potential", solid, fsteps);
+    }
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,1389 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | jwlIbFoam: rock blasting with OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "blastFluidSolver.H"
+#include "blastLimiters.H"
+#include "surfaceFields.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(blastFluidSolver, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    Foam::IOobject readIO
+    (
+        const Foam::word& name,
+        const Foam::fvMesh& mesh,
+        const Foam::IOobject::readOption r
+    )
+    {
+        return Foam::IOobject
+        (
+            name,
+            mesh.time().timeName(),
+            mesh,
+            r,
+            Foam::IOobject::AUTO_WRITE
+        );
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::blastFluidSolver::readControls()
+{
+    const word lim(fluidDict_.getOrDefault<word>("limiter", "vanLeer"));
+    if (lim == "none") limiter_ = NONE;
+    else if (lim == "minmod") limiter_ = MINMOD;
+    else if (lim == "vanLeer") limiter_ = VANLEER;
+    else if (lim == "vanAlbada") limiter_ = VANALBADA;
+    else if (lim == "MC") limiter_ = MCLIM;
+    else if (lim == "superbee") limiter_ = SUPERBEE;
+    else
+    {
+        FatalIOErrorInFunction(fluidDict_)
+            << "Unknown limiter '" << lim << "' in entry 'limiter'. Valid: "
+            << "none minmod vanLeer vanAlbada MC superbee"
+            << exit(FatalIOError);
+    }
+
+    RKorder_ = fluidDict_.getOrDefault<label>("RKorder", 2);
+    if (RKorder_ < 1 || RKorder_ > 3)
+    {
+        FatalIOErrorInFunction(fluidDict_)
+            << "Entry 'RKorder' must be 1, 2 or 3, got " << RKorder_
+            << exit(FatalIOError);
+    }
+
+    const dictionary& Qdict = fluidDict_.subOrEmptyDict("QScheme");
+    QActive_ = Qdict.getOrDefault<bool>("active", false);
+    CQ_ = Qdict.getOrDefault<scalar>("CQ", 1.5);
+    CL_ = Qdict.getOrDefault<scalar>("CL", 0.06);
+    if (CQ_ < 0 || CL_ < 0)
+    {
+        FatalIOErrorInFunction(fluidDict_)
+            << "QScheme coefficients CQ and CL must be >= 0"
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::blastFluidSolver::setGeometry()
+{
+    const fvBoundaryMesh& bm = mesh_.boundary();
+    nInternal_ = mesh_.nInternalFaces();
+
+    patchStart_.setSize(bm.size());
+    patchKind_.setSize(bm.size());
+    label n = nInternal_;
+    forAll(bm, patchi)
+    {
+        const fvPatch& pp = bm[patchi];
+        const word& ptype = pp.type();
+        const word& Utype = U_.boundaryField()[patchi].type();
+        patchStart_[patchi] = n;
+        if (pp.size() == 0 || ptype == "empty")
+        {
+            patchKind_[patchi] = SKIP;
+            continue;
+        }
+        if (pp.coupled())
+        {
+            patchKind_[patchi] = COUPLED;
+        }
+        else if (ptype == "wedge")
+        {
+            patchKind_[patchi] = WEDGE;
+        }
+        else if
+        (
+            ptype == "wall" || ptype == "symmetry"
+         || ptype == "symmetryPlane"
+         || Utype == "slip" || Utype == "noSlip"
+        )
+        {
+            patchKind_[patchi] = REFLECTIVE;
+        }
+        else
+        {
+            patchKind_[patchi] = GHOST;
+        }
+        n += pp.size();
+    }
+    nFaces_ = n;
+
+    own_.setSize(nFaces_);
+    nei_.setSize(nInternal_);
+    Sf_.setSize(nFaces_);
+    magSf_.setSize(nFaces_);
+    w_.setSize(nFaces_, 1);
+    delta_.setSize(nFaces_, Zero);
+
+    const labelUList& owner = mesh_.owner();
+    const labelUList& neighbour = mesh_.neighbour();
+    const vectorField& C = mesh_.C();
+    const surfaceScalarField& weights = mesh_.weights();
+
+    for (label f = 0; f < nInternal_; ++f)
+    {
+        own_[f] = owner[f];
+        nei_[f] = neighbour[f];
+        Sf_[f] = mesh_.Sf()[f];
+        magSf_[f] = mesh_.magSf()[f];
+        w_[f] = weights[f];
+        delta_[f] = C[neighbour[f]] - C[owner[f]];
+    }
+
+    forAll(bm, patchi)
+    {
+        if (patchKind_[patchi] == SKIP) continue;
+        const fvPatch& pp = bm[patchi];
+        const labelUList& fc = pp.faceCells();
+        const vectorField& pSf = mesh_.Sf().boundaryField()[patchi];
+        const scalarField& pmagSf = mesh_.magSf().boundaryField()[patchi];
+        const scalarField& pw = weights.boundaryField()[patchi];
+        const vectorField pdelta(pp.delta());
+        forAll(pp, j)
+        {
+            const label cf = patchStart_[patchi] + j;
+            own_[cf] = fc[j];
+            Sf_[cf] = pSf[j];
+            magSf_[cf] = pmagSf[j];
+            w_[cf] = (patchKind_[patchi] == COUPLED) ? pw[j] : 1;
+            delta_[cf] = pdelta[j];
+        }
+    }
+
+    // Cell factors: Courant and length (wedge faces excluded)
+    const scalarField& V = mesh_.V();
+    scalarField sumS(mesh_.nCells(), 0);
+    for (label f = 0; f < nInternal_; ++f)
+    {
+        sumS[own_[f]] += magSf_[f];
+        sumS[nei_[f]] += magSf_[f];
+    }
+    forAll(bm, patchi)
+    {
+        if (patchKind_[patchi] == SKIP || patchKind_[patchi] == WEDGE)
+        {
+            continue;
+        }
+        for (label j = 0; j < bm[patchi].size(); ++j)
+        {
+            const label cf = patchStart_[patchi] + j;
+            sumS[own_[cf]] += magSf_[cf];
+        }
+    }
+    const label nD = mesh_.nSolutionD();
+    CoGeom_ = 0.5*sumS/V;
+    cellLength_ = 2*nD*V/sumS;
+}
+
+
+void Foam::blastFluidSolver::conservativeFromPrimitive()
+{
+    const label n = mesh_.nCells();
+    scalarField& rho = rho_.primitiveFieldRef();
+    const vectorField& U = U_.primitiveField();
+    const scalarField& p = p_.primitiveField();
+
+    if (twoPhase_)
+    {
+        scalarField& alpha = alpha1Ptr_->primitiveFieldRef();
+        const scalarField& r1 = rho1Ptr_->primitiveField();
+        const scalarField& r2 = rho2Ptr_->primitiveField();
+        for (label i = 0; i < n; ++i)
+        {
+            if (!(alpha[i] >= 0 && alpha[i] <= 1))
+            {
+                FatalErrorInFunction
+                    << "Field " << alpha1Ptr_->name() << " out of [0, 1] in"
+                    << " cell " << i << ": " << alpha[i]
+                    << exit(FatalError);
+            }
+            if (!(r1[i] > 0) || !(r2[i] > 0))
+            {
+                FatalErrorInFunction
+                    << "Non-positive phase density in cell " << i
+                    << ": " << rho1Ptr_->name() << " = " << r1[i] << ", "
+                    << rho2Ptr_->name() << " = " << r2[i]
+                    << exit(FatalError);
+            }
+            rho[i] = alpha[i]*r1[i] + (1 - alpha[i])*r2[i];
+            alphaRho1Ptr_->primitiveFieldRef()[i] = alpha[i]*r1[i];
+        }
+        mixture_.rhoeC2(n, alpha, r1, r2, rho, p, rhoe_, c_);
+    }
+    else
+    {
+        mixture_.rhoeC2(n, rho, rho, rho, rho, p, rhoe_, c_);
+    }
+
+    for (label i = 0; i < n; ++i)
+    {
+        if (!(rho[i] > 0) || !(p[i] > 0))
+        {
+            FatalErrorInFunction
+                << "Initial state: non-positive density or pressure in cell "
+                << i << ": rho = " << rho[i] << ", p = " << p[i]
+                << exit(FatalError);
+        }
+        rhoU_.primitiveFieldRef()[i] = rho[i]*U[i];
+        rhoE_.primitiveFieldRef()[i] = rhoe_[i] + 0.5*rho[i]*magSqr(U[i]);
+    }
+}
+
+
+bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
+{
+    const label n = mesh_.nCells();
+    const scalarField& rho = rho_.primitiveField();
+    const vectorField& rhoU = rhoU_.primitiveField();
+    const scalarField& rhoE = rhoE_.primitiveField();
+    vectorField& U = U_.primitiveFieldRef();
+    scalarField& p = p_.primitiveFieldRef();
+    scalarField& e = e_.primitiveFieldRef();
+
+    // Screen the conservative state before any operation that could trap
+    // (FOAM_SIGFPE): a bad cell gets a harmless placeholder and is reported
+    label bad = -1;
+    for (label i = 0; i < n; ++i)
+    {
+        const vector& m = rhoU[i];
+        if
+        (
+            rho[i] > 0 && std::isfinite(rho[i]) && std::isfinite(rhoE[i])
+         && std::isfinite(m.x()) && std::isfinite(m.y())
+         && std::isfinite(m.z())
+        )
+        {
+            U[i] = m/rho[i];
+            rhoe_[i] = rhoE[i] - 0.5*(m & U[i]);
+        }
+        else
+        {
+            if (bad < 0) bad = i;
+            U[i] = Zero;
+            rhoe_[i] = 1;
+        }
+    }
+
+    // Phase densities: floor so that a vanishing phase stays finite
+    const scalar rhoFloor = 1e-12;
+    const scalar alphaEps = 1e-12;
+
+    if (twoPhase_)
+    {
+        scalarField& alpha = alpha1Ptr_->primitiveFieldRef();
+        const scalarField& ar1 = alphaRho1Ptr_->primitiveField();
+        scalarField& r1 = rho1Ptr_->primitiveFieldRef();
+        scalarField& r2 = rho2Ptr_->primitiveFieldRef();
+        for (label i = 0; i < n; ++i)
+        {
+            const scalar a = min(max(alpha[i], scalar(0)), scalar(1));
+            alpha[i] = a;
+            const scalar rhoi = max(rho[i], rhoFloor);
+            const scalar m1 = min(max(ar1[i], scalar(0)), rhoi);
+            r1[i] = max(m1/max(a, alphaEps), rhoFloor);
+            r2[i] = max((rhoi - m1)/max(1 - a, alphaEps), rhoFloor);
+        }
+        mixture_.pc2(n, alpha, r1, r2, rho, rhoe_, p, c_);
+    }
+    else
+    {
+        forAll(rhoSafe_, i)
+        {
+            rhoSafe_[i] = max(rho[i], rhoFloor);
+        }
+        mixture_.pc2(n, rhoSafe_, rhoSafe_, rhoSafe_, rhoSafe_, rhoe_, p, c_);
+    }
+
+    // Check and take the square root of c^2
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar c2 = c_[i];
+        if
+        (
+            !(rho[i] > 0) || !(p[i] > 0) || !(c2 > 0)
+         || !std::isfinite(p[i]) || !std::isfinite(c2)
+         || !std::isfinite(rhoE[i]) || !std::isfinite(magSqr(rhoU[i]))
+        )
+        {
+            if (bad < 0) bad = i;
+            c_[i] = 0;
+        }
+        else
+        {
+            c_[i] = sqrt(c2);
+        }
+        e[i] = rhoe_[i]/max(rho[i], VSMALL);
+    }
+
+    if (!fatal)
+    {
+        if (returnReduce(bad >= 0, orOp<bool>()))
+        {
+            // Mark every bad cell for a first-order retry
+            scalarField& lo = lowOrder_.primitiveFieldRef();
+            for (label i = bad; i < n; ++i)
+            {
+                if
+                (
+                    !(rho[i] > 0) || !(p[i] > 0) || !(c_[i] > 0)
+                 || !std::isfinite(p[i])
+                )
+                {
+                    lo[i] = 1;
+                }
+            }
+            primitivesCurrent_ = false;
+            return false;
+        }
+    }
+    if (bad >= 0)
+    {
+        Pout<< "blastFluidSolver: non-physical state at time "
+            << mesh_.time().timeName() << " in cell " << bad
+            << " (centre " << mesh_.C()[bad] << "): rho = " << rho[bad]
+            << ", p = " << p[bad] << ", U = " << U[bad]
+            << ", rhoE = " << rhoE[bad] << endl;
+    }
+    if (returnReduce(bad >= 0, orOp<bool>()))
+    {
+        FatalErrorInFunction
+            << "Negative or non-finite density/pressure at time "
+            << mesh_.time().timeName() << " (step to "
+            << mesh_.time().value() << "), see the cell reported above."
+            << " Stopping without writing this time; the last written time"
+            << " is the last good state." << exit(FatalError);
+    }
+
+    p_.correctBoundaryConditions();
+    U_.correctBoundaryConditions();
+    if (twoPhase_)
+    {
+        alpha1Ptr_->correctBoundaryConditions();
+        rho1Ptr_->correctBoundaryConditions();
+        rho2Ptr_->correctBoundaryConditions();
+    }
+    else
+    {
+        rho_.correctBoundaryConditions();
+    }
+
+    primitivesCurrent_ = true;
+    return true;
+}
+
+
+void Foam::blastFluidSolver::growLowOrder()
+{
+    lowOrder_.correctBoundaryConditions();
+    const scalarField lo0(lowOrder_.primitiveField());
+    scalarField& lo = lowOrder_.primitiveFieldRef();
+    for (label f = 0; f < nInternal_; ++f)
+    {
+        const label P = own_[f], N = nei_[f];
+        if (lo0[P] > 0 || lo0[N] > 0)
+        {
+            lo[P] = 1;
+            lo[N] = 1;
+        }
+    }
+    forAll(patchKind_, patchi)
+    {
+        if (patchKind_[patchi] != COUPLED) continue;
+        const tmp<scalarField> tnbr =
+            lowOrder_.boundaryField()[patchi].patchNeighbourField();
+        const scalarField& nbr = tnbr();
+        const label start = patchStart_[patchi];
+        forAll(nbr, j)
+        {
+            if (nbr[j] > 0) lo[own_[start + j]] = 1;
+        }
+    }
+    lowOrder_.correctBoundaryConditions();
+}
+
+
+template<class Type, class GradType>
+void Foam::blastFluidSolver::gaussGrad
+(
+    const GeometricField<Type, fvPatchField, volMesh>& phi,
+    GeometricField<GradType, fvPatchField, volMesh>& grad
+) const
+{
+    Field<GradType>& g = grad.primitiveFieldRef();
+    const Field<Type>& vf = phi.primitiveField();
+    g = Zero;
+
+    for (label f = 0; f < nInternal_; ++f)
+    {
+        const label P = own_[f], N = nei_[f];
+        const Type phif = w_[f]*vf[P] + (1 - w_[f])*vf[N];
+        const GradType s = Sf_[f]*phif;
+        g[P] += s;
+        g[N] -= s;
+    }
+    forAll(patchKind_, patchi)
+    {
+        if (patchKind_[patchi] == SKIP) continue;
+        const fvPatchField<Type>& pf = phi.boundaryField()[patchi];
+        const label start = patchStart_[patchi];
+        if (patchKind_[patchi] == COUPLED)
+        {
+            // Processor patch fields hold the neighbour cell values:
+            // interpolate as on an internal face
+            const tmp<Field<Type>> tnbr = pf.patchNeighbourField();
+            const Field<Type>& nbr = tnbr();
+            forAll(pf, j)
+            {
+                const label cf = start + j;
+                const label P = own_[cf];
+                g[P] += Sf_[cf]*(w_[cf]*vf[P] + (1 - w_[cf])*nbr[j]);
+            }
+        }
+        else
+        {
+            forAll(pf, j)
+            {
+                const label cf = start + j;
+                g[own_[cf]] += Sf_[cf]*pf[j];
+            }
+        }
+    }
+    const scalarField& V = mesh_.V();
+    forAll(g, i)
+    {
+        g[i] /= V[i];
+    }
+    grad.correctBoundaryConditions();
+}
+
+
+namespace Foam
+{
+namespace
+{
+    //- Limited reconstruction of one field on internal and coupled faces;
+    //  ghost and reflective faces get L = owner value, R = patch value
+    template<class Limiter, class Type, class GradType>
+    void reconstructField
+    (
+        const GeometricField<Type, fvPatchField, volMesh>& phi,
+        const GeometricField<GradType, fvPatchField, volMesh>& grad,
+        const label nInternal,
+        const labelList& own,
+        const labelList& nei,
+        const scalarField& w,
+        const vectorField& delta,
+        const labelList& patchStart,
+        const List<blastFluidSolver::patchKind>& kinds,
+        const volScalarField& lowOrder,
+        const bool anyLowOrder,
+        UList<Type>& L,
+        UList<Type>& R
+    )
+    {
+        const Field<Type>& vf = phi.primitiveField();
+        const Field<GradType>& g = grad.primitiveField();
+        const scalarField& lo = lowOrder.primitiveField();
+
+        for (label f = 0; f < nInternal; ++f)
+        {
+            const label P = own[f], N = nei[f];
+            if (anyLowOrder && (lo[P] > 0 || lo[N] > 0))
+            {
+                L[f] = vf[P];
+                R[f] = vf[N];
+                continue;
+            }
+            blastLimiters::limitedPair<Limiter>
+            (
+                vf[P], vf[N], delta[f] & g[P], delta[f] & g[N], w[f],
+                L[f], R[f]
+            );
+        }
+
+        forAll(kinds, patchi)
+        {
+            if (kinds[patchi] == blastFluidSolver::SKIP) continue;
+            const fvPatchField<Type>& pf = phi.boundaryField()[patchi];
+            const label start = patchStart[patchi];
+            if (kinds[patchi] == blastFluidSolver::COUPLED)
+            {
+                const tmp<Field<Type>> tnbr = pf.patchNeighbourField();
+                const Field<Type>& nbr = tnbr();
+                const tmp<Field<GradType>> tgnbr =
+                    grad.boundaryField()[patchi].patchNeighbourField();
+                const Field<GradType>& gnbr = tgnbr();
+                tmp<scalarField> tlonbr;
+                if (anyLowOrder)
+                {
+                    tlonbr =
+                        lowOrder.boundaryField()[patchi].patchNeighbourField();
+                }
+                forAll(pf, j)
+                {
+                    const label cf = start + j;
+                    const label P = own[cf];
+                    if (anyLowOrder && (lo[P] > 0 || tlonbr()[j] > 0))
+                    {
+                        L[cf] = vf[P];
+                        R[cf] = nbr[j];
+                        continue;
+                    }
+                    blastLimiters::limitedPair<Limiter>
+                    (
+                        vf[P], nbr[j], delta[cf] & g[P], delta[cf] & gnbr[j],
+                        w[cf], L[cf], R[cf]
+                    );
+                }
+            }
+            else
+            {
+                forAll(pf, j)
+                {
+                    const label cf = start + j;
+                    L[cf] = vf[own[cf]];
+                    R[cf] = pf[j];
+                }
+            }
+        }
+    }
+
+    struct firstOrder
+    {
+        static inline scalar psi(const scalar) { return 0; }
+    };
+}
+}
+
+
+template<class Limiter>
+void Foam::blastFluidSolver::reconstruct()
+{
+#define RECONSTRUCT(phi, grad, L, R)                                           \
+    reconstructField<Limiter>                                                  \
+    (                                                                          \
+        phi, grad, nInternal_, own_, nei_, w_, delta_, patchStart_,            \
+        patchKind_, lowOrder_, anyLowOrder, L, R                               \
+    )
+    const bool anyLowOrder = anyLowOrder_;
+
+    if (twoPhase_)
+    {
+        RECONSTRUCT(alpha1Ptr_(), gradAlpha_(), faces_.alphaL, faces_.alphaR);
+        RECONSTRUCT(rho1Ptr_(), gradRho1_(), rho1L_, rho1R_);
+        RECONSTRUCT(rho2Ptr_(), gradRho2_(), rho2L_, rho2R_);
+    }
+    else
+    {
+        RECONSTRUCT(rho_, gradRho_(), faces_.rhoL, faces_.rhoR);
+    }
+    RECONSTRUCT(U_, gradU_(), faces_.UL, faces_.UR);
+    RECONSTRUCT(p_, gradP_(), faces_.pL, faces_.pR);
+
+#undef RECONSTRUCT
+}
+
+
+void Foam::blastFluidSolver::faceStates()
+{
+    if (limiter_ == NONE)
+    {
+        reconstruct<firstOrder>();
+        return;
+    }
+
+    if (twoPhase_)
+    {
+        gaussGrad(alpha1Ptr_(), gradAlpha_());
+        gaussGrad(rho1Ptr_(), gradRho1_());
+        gaussGrad(rho2Ptr_(), gradRho2_());
+    }
+    else
+    {
+        gaussGrad(rho_, gradRho_());
+    }
+    gaussGrad(U_, gradU_());
+    gaussGrad(p_, gradP_());
+
+    switch (limiter_)
+    {
+        case MINMOD: reconstruct<blastLimiters::minmod>(); break;
+        case VANLEER: reconstruct<blastLimiters::vanLeer>(); break;
+        case VANALBADA: reconstruct<blastLimiters::vanAlbada>(); break;
+        case MCLIM: reconstruct<blastLimiters::MC>(); break;
+        case SUPERBEE: reconstruct<blastLimiters::superbee>(); break;
+        default: reconstruct<firstOrder>(); break;
+    }
+}
+
+
+void Foam::blastFluidSolver::faceThermo()
+{
+    blastFaceStates& s = faces_;
+    const label n = nFaces_;
+
+    if (twoPhase_)
+    {
+        for (label f = 0; f < n; ++f)
+        {
+            const scalar aL = s.alphaL[f], aR = s.alphaR[f];
+            const scalar m1L = aL*rho1L_[f], m1R = aR*rho1R_[f];
+            s.rhoL[f] = m1L + (1 - aL)*rho2L_[f];
+            s.rhoR[f] = m1R + (1 - aR)*rho2R_[f];
+            s.Y1L[f] = m1L/s.rhoL[f];
+            s.Y1R[f] = m1R/s.rhoR[f];
+        }
+        mixture_.rhoeC2
+        (
+            n, s.alphaL, rho1L_, rho2L_, s.rhoL, s.pL, workE_, workC2_
+        );
+        for (label f = 0; f < n; ++f)
+        {
+            s.EL[f] = workE_[f] + 0.5*s.rhoL[f]*magSqr(s.UL[f]);
+            s.cL[f] = sqrt(max(workC2_[f], scalar(0)));
+        }
+        mixture_.rhoeC2
+        (
+            n, s.alphaR, rho1R_, rho2R_, s.rhoR, s.pR, workE_, workC2_
+        );
+        for (label f = 0; f < n; ++f)
+        {
+            s.ER[f] = workE_[f] + 0.5*s.rhoR[f]*magSqr(s.UR[f]);
+            s.cR[f] = sqrt(max(workC2_[f], scalar(0)));
+        }
+    }
+    else
+    {
+        mixture_.rhoeC2(n, s.rhoL, s.rhoL, s.rhoL, s.rhoL, s.pL, workE_, workC2_);
+        for (label f = 0; f < n; ++f)
+        {
+            s.EL[f] = workE_[f] + 0.5*s.rhoL[f]*magSqr(s.UL[f]);
+            s.cL[f] = sqrt(max(workC2_[f], scalar(0)));
+        }
+        mixture_.rhoeC2(n, s.rhoR, s.rhoR, s.rhoR, s.rhoR, s.pR, workE_, workC2_);
+        for (label f = 0; f < n; ++f)
+        {
+            s.ER[f] = workE_[f] + 0.5*s.rhoR[f]*magSqr(s.UR[f]);
+            s.cR[f] = sqrt(max(workC2_[f], scalar(0)));
+        }
+    }
+}
+
+
+void Foam::blastFluidSolver::computeFluxes()
+{
+    flux_->fluxes(0, nInternal_, Sf_, magSf_, faces_, twoPhase_, F_);
+
+    forAll(patchKind_, patchi)
+    {
+        const label start = patchStart_[patchi];
+        const label size = mesh_.boundary()[patchi].size();
+        if (patchKind_[patchi] == SKIP)
+        {
+            continue;
+        }
+        else if (patchKind_[patchi] == WEDGE)
+        {
+            // Wedge planes: no mass or energy crosses them; the pressure on
+            // the two (non-parallel) planes is the axisymmetric source. The
+            // tilt of the planes gives u.n != 0 for radial flow, which is
+            // not an impinging flow: no Riemann problem here.
+            for (label cf = start; cf < start + size; ++cf)
+            {
+                F_.rho[cf] = 0;
+                F_.rhoU[cf] = faces_.pL[cf]*Sf_[cf];
+                F_.rhoE[cf] = 0;
+                F_.uS[cf] = 0;
+                if (twoPhase_)
+                {
+                    F_.rhoY1[cf] = 0;
+                    F_.alpha[cf] = 0;
+                }
+            }
+        }
+        else if (patchKind_[patchi] != REFLECTIVE)
+        {
+            flux_->fluxes
+            (
+                start, start + size, Sf_, magSf_, faces_, twoPhase_, F_
+            );
+        }
+        else
+        {
+            // Mirror-state Riemann problem: contact speed zero, so the mass
+            // and energy fluxes are exactly zero (conservation to round-off)
+            for (label cf = start; cf < start + size; ++cf)
+            {
+                const vector n = Sf_[cf]/magSf_[cf];
+                const scalar un = faces_.UL[cf] & n;
+                const scalar pStar = max
+                (
+                    faces_.pL[cf]
+                  + faces_.rhoL[cf]*un*(mag(un) + un + faces_.cL[cf]),
+                    scalar(0)
+                );
+                F_.rho[cf] = 0;
+                F_.rhoU[cf] = pStar*Sf_[cf];
+                F_.rhoE[cf] = 0;
+                F_.uS[cf] = 0;
+                if (twoPhase_)
+                {
+                    F_.rhoY1[cf] = 0;
+                    F_.alpha[cf] = 0;
+                }
+            }
+        }
+    }
+}
+
+
+void Foam::blastFluidSolver::addQScheme()
+{
+    const vectorField& U = U_.primitiveField();
+    divU_ = 0;
+    for (label f = 0; f < nInternal_; ++f)
+    {
+        const label P = own_[f], N = nei_[f];
+        const scalar phi = (w_[f]*U[P] + (1 - w_[f])*U[N]) & Sf_[f];
+        divU_[P] += phi;
+        divU_[N] -= phi;
+    }
+    forAll(patchKind_, patchi)
+    {
+        if (patchKind_[patchi] == SKIP || patchKind_[patchi] == REFLECTIVE)
+        {
+            continue;
+        }
+        const fvPatchVectorField& Ub = U_.boundaryField()[patchi];
+        const label start = patchStart_[patchi];
+        if (patchKind_[patchi] == COUPLED)
+        {
+            const tmp<vectorField> tnbr = Ub.patchNeighbourField();
+            const vectorField& nbr = tnbr();
+            forAll(Ub, j)
+            {
+                const label cf = start + j;
+                const label P = own_[cf];
+                divU_[P] += (w_[cf]*U[P] + (1 - w_[cf])*nbr[j]) & Sf_[cf];
+            }
+        }
+        else
+        {
+            forAll(Ub, j)
+            {
+                divU_[own_[start + j]] += Ub[j] & Sf_[start + j];
+            }
+        }
+    }
+
+    const scalarField& V = mesh_.V();
+    const scalarField& rho = rho_.primitiveField();
+    scalarField& q = q_.primitiveFieldRef();
+    forAll(q, i)
+    {
+        const scalar d = divU_[i]/V[i];
+        const scalar l = cellLength_[i];
+        q[i] = d < 0 ? rho[i]*l*(CQ_*CQ_*l*d*d - CL_*c_[i]*d) : 0;
+    }
+    q_.correctBoundaryConditions();
+
+    for (label f = 0; f < nInternal_; ++f)
+    {
+        const label P = own_[f], N = nei_[f];
+        const scalar qf = w_[f]*q[P] + (1 - w_[f])*q[N];
+        const vector Uf = w_[f]*U[P] + (1 - w_[f])*U[N];
+        F_.rhoU[f] += qf*Sf_[f];
+        F_.rhoE[f] += qf*(Uf & Sf_[f]);
+    }
+    forAll(patchKind_, patchi)
+    {
+        if (patchKind_[patchi] == SKIP) continue;
+        const fvPatchScalarField& qb = q_.boundaryField()[patchi];
+        const fvPatchVectorField& Ub = U_.boundaryField()[patchi];
+        const label start = patchStart_[patchi];
+        const bool reflective =
+        (
+            patchKind_[patchi] == REFLECTIVE || patchKind_[patchi] == WEDGE
+        );
+        if (patchKind_[patchi] == COUPLED)
+        {
+            const tmp<scalarField> tqn = qb.patchNeighbourField();
+            const tmp<vectorField> tUn = Ub.patchNeighbourField();
+            const scalarField& qn = tqn();
+            const vectorField& Un = tUn();
+            forAll(qb, j)
+            {
+                const label cf = start + j;
+                const label P = own_[cf];
+                const scalar w = w_[cf];
+                const scalar qf = w*q[P] + (1 - w)*qn[j];
+                F_.rhoU[cf] += qf*Sf_[cf];
+                F_.rhoE[cf] += qf*((w*U[P] + (1 - w)*Un[j]) & Sf_[cf]);
+            }
+            continue;
+        }
+        forAll(qb, j)
+        {
+            const label cf = start + j;
+            F_.rhoU[cf] += qb[j]*Sf_[cf];
+            if (!reflective)
+            {
+                F_.rhoE[cf] += qb[j]*(Ub[j] & Sf_[cf]);
+            }
+        }
+    }
+}
+
+
+void Foam::blastFluidSolver::addSolidForcing(const scalar dt)
+{
+    // Hook for the immersed body (later issue): with alpha_s = alphaSolid
+    // and u_s = Usolid, the implicit absorption
+    //     rhoU <- (rhoU + dt sigma rho u_s)/(1 + dt sigma/rho ...),
+    //     sigma = alpha_s rho/dt
+    // and the fluid fraction (1 - alpha_s) in the mass balance are added
+    // here, on the residuals dRho_, dRhoU_, dRhoE_. Without a solid: no-op.
+    if (!alphaSolidPtr_)
+    {
+        return;
+    }
+}
+
+
+void Foam::blastFluidSolver::assembleResidual()
+{
+    dRho_ = 0;
+    dRhoU_ = Zero;
+    dRhoE_ = 0;
+    if (twoPhase_)
+    {
+        dAlpha_ = 0;
+        dAlphaRho1_ = 0;
+    }
+    const scalarField* alphaPtr =
+        twoPhase_ ? &alpha1Ptr_->primitiveField() : nullptr;
+
+    for (label f = 0; f < nInternal_; ++f)
+    {
+        const label P = own_[f], N = nei_[f];
+        dRho_[P] -= F_.rho[f];
+        dRho_[N] += F_.rho[f];
+        dRhoU_[P] -= F_.rhoU[f];
+        dRhoU_[N] += F_.rhoU[f];
+        dRhoE_[P] -= F_.rhoE[f];
+        dRhoE_[N] += F_.rhoE[f];
+    }
+    for (label cf = nInternal_; cf < nFaces_; ++cf)
+    {
+        const label P = own_[cf];
+        dRho_[P] -= F_.rho[cf];
+        dRhoU_[P] -= F_.rhoU[cf];
+        dRhoE_[P] -= F_.rhoE[cf];
+    }
+
+    if (twoPhase_)
+    {
+        const scalarField& alpha = *alphaPtr;
+        for (label f = 0; f < nInternal_; ++f)
+        {
+            const label P = own_[f], N = nei_[f];
+            dAlphaRho1_[P] -= F_.rhoY1[f];
+            dAlphaRho1_[N] += F_.rhoY1[f];
+            // d alpha/dt = -div(alpha u) + alpha div(u)
+            dAlpha_[P] -= F_.alpha[f] - alpha[P]*F_.uS[f];
+            dAlpha_[N] += F_.alpha[f] - alpha[N]*F_.uS[f];
+        }
+        for (label cf = nInternal_; cf < nFaces_; ++cf)
+        {
+            const label P = own_[cf];
+            dAlphaRho1_[P] -= F_.rhoY1[cf];
+            dAlpha_[P] -= F_.alpha[cf] - alpha[P]*F_.uS[cf];
+        }
+    }
+
+    const scalarField& V = mesh_.V();
+    forAll(V, i)
+    {
+        const scalar rV = 1/V[i];
+        dRho_[i] *= rV;
+        dRhoU_[i] *= rV;
+        dRhoE_[i] *= rV;
+    }
+    if (twoPhase_)
+    {
+        forAll(V, i)
+        {
+            dAlpha_[i] /= V[i];
+            dAlphaRho1_[i] /= V[i];
+        }
+    }
+}
+
+
+bool Foam::blastFluidSolver::stage(const scalar a, const scalar dt)
+{
+    if (!primitivesCurrent_ && !primitivesFromConservative(false))
+    {
+        return false;
+    }
+
+    faceStates();
+    faceThermo();
+    computeFluxes();
+    if (QActive_)
+    {
+        addQScheme();
+    }
+    assembleResidual();
+    addSolidForcing(dt);
+
+    const scalar b = 1 - a;
+    scalarField& rho = rho_.primitiveFieldRef();
+    vectorField& rhoU = rhoU_.primitiveFieldRef();
+    scalarField& rhoE = rhoE_.primitiveFieldRef();
+    forAll(rho, i)
+    {
+        rho[i] = a*rho0_[i] + b*(rho[i] + dt*dRho_[i]);
+        rhoU[i] = a*rhoU0_[i] + b*(rhoU[i] + dt*dRhoU_[i]);
+        rhoE[i] = a*rhoE0_[i] + b*(rhoE[i] + dt*dRhoE_[i]);
+    }
+    if (twoPhase_)
+    {
+        scalarField& alpha = alpha1Ptr_->primitiveFieldRef();
+        scalarField& ar1 = alphaRho1Ptr_->primitiveFieldRef();
+        forAll(alpha, i)
+        {
+            alpha[i] = min
+            (
+                max(a*alpha0_[i] + b*(alpha[i] + dt*dAlpha_[i]), scalar(0)),
+                scalar(1)
+            );
+            ar1[i] = a*alphaRho10_[i] + b*(ar1[i] + dt*dAlphaRho1_[i]);
+        }
+    }
+    primitivesCurrent_ = false;
+    return true;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    thermoDict_
+    (
+        IOobject
+        (
+            "thermophysicalProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    fluidDict_
+    (
+        IOobject
+        (
+            "blastFluidProperties",
+            mesh.time().system(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE
+        ),
+        dictionary()
+    ),
+    mixture_(thermoDict_),
+    twoPhase_(mixture_.twoPhase()),
+    flux_(fluxScheme::New(fluidDict_)),
+    limiter_(VANLEER),
+    RKorder_(2),
+    QActive_(false),
+    CQ_(1.5),
+    CL_(0.06),
+    p_(readIO("p", mesh, IOobject::MUST_READ), mesh),
+    U_(readIO("U", mesh, IOobject::MUST_READ), mesh),
+    e_
+    (
+        readIO("e", mesh, IOobject::NO_READ),
+        mesh,
+        dimensionedScalar(dimEnergy/dimMass, Zero),
+        "calculated"
+    ),
+    rho_
+    (
+        readIO("rho", mesh, IOobject::READ_IF_PRESENT),
+        mesh,
+        dimensionedScalar(dimDensity, Zero),
+        "calculated"
+    ),
+    rhoU_
+    (
+        readIO("rhoU", mesh, IOobject::READ_IF_PRESENT),
+        mesh,
+        dimensionedVector(dimDensity*dimVelocity, Zero),
+        "calculated"
+    ),
+    rhoE_
+    (
+        readIO("rhoE", mesh, IOobject::READ_IF_PRESENT),
+        mesh,
+        dimensionedScalar(dimEnergy/dimVolume, Zero),
+        "calculated"
+    ),
+    c_(mesh.nCells(), 0),
+    rhoe_(mesh.nCells(), 0),
+    rhoSafe_(mesh.nCells(), 1),
+    q_
+    (
+        IOobject
+        (
+            "Qpressure",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar(dimPressure, Zero),
+        "zeroGradient"
+    ),
+    divU_(mesh.nCells(), 0),
+    lowOrder_
+    (
+        IOobject
+        (
+            "lowOrder",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar(dimless, Zero),
+        "zeroGradient"
+    ),
+    nRetries_(0),
+    anyLowOrder_(false),
+    alphaSolidPtr_(nullptr),
+    UsolidPtr_(nullptr),
+    primitivesCurrent_(false)
+{
+    readControls();
+
+    const label nCells = mesh.nCells();
+    const bool restart =
+        IOobject("rhoE", mesh.time().timeName(), mesh, IOobject::MUST_READ)
+       .typeHeaderOk<volScalarField>(true);
+
+    if (twoPhase_)
+    {
+        const word& m1 = mixture_.materials()[0];
+        const word& m2 = mixture_.materials()[1];
+        alpha1Ptr_.reset
+        (
+            new volScalarField
+            (
+                readIO("alpha." + m1, mesh, IOobject::MUST_READ), mesh
+            )
+        );
+        rho1Ptr_.reset
+        (
+            new volScalarField(readIO("rho." + m1, mesh, IOobject::MUST_READ), mesh)
+        );
+        rho2Ptr_.reset
+        (
+            new volScalarField(readIO("rho." + m2, mesh, IOobject::MUST_READ), mesh)
+        );
+        alphaRho1Ptr_.reset
+        (
+            new volScalarField
+            (
+                readIO("alphaRho." + m1, mesh, IOobject::READ_IF_PRESENT),
+                mesh,
+                dimensionedScalar(dimDensity, Zero),
+                "calculated"
+            )
+        );
+        if
+        (
+            restart
+         && !alphaRho1Ptr_->headerOk()
+        )
+        {
+            FatalErrorInFunction
+                << "Restart from time " << mesh.time().timeName()
+                << ": rhoE present but alphaRho." << m1 << " missing"
+                << exit(FatalError);
+        }
+    }
+    else if (!rho_.headerOk())
+    {
+        FatalErrorInFunction
+            << "Single-material case: field 'rho' missing in time "
+            << mesh.time().timeName() << exit(FatalError);
+    }
+
+    if (restart && !rhoU_.headerOk())
+    {
+        FatalErrorInFunction
+            << "Restart from time " << mesh.time().timeName()
+            << ": rhoE present but rhoU missing" << exit(FatalError);
+    }
+
+    // Gradient fields (zeroGradient; coupled patches get their own type)
+    auto makeGradS = [&](const word& name)
+    {
+        return new volVectorField
+        (
+            IOobject(name, mesh.time().timeName(), mesh),
+            mesh,
+            dimensionedVector(dimless, Zero),
+            "zeroGradient"
+        );
+    };
+    if (twoPhase_)
+    {
+        gradAlpha_.reset(makeGradS("gradAlpha"));
+        gradRho1_.reset(makeGradS("gradRho1"));
+        gradRho2_.reset(makeGradS("gradRho2"));
+    }
+    else
+    {
+        gradRho_.reset(makeGradS("gradRho"));
+    }
+    gradP_.reset(makeGradS("gradP"));
+    gradU_.reset
+    (
+        new volTensorField
+        (
+            IOobject("gradU", mesh.time().timeName(), mesh),
+            mesh,
+            dimensionedTensor(dimless, Zero),
+            "zeroGradient"
+        )
+    );
+
+    setGeometry();
+
+    faces_.setSize(nFaces_, twoPhase_);
+    F_.setSize(nFaces_, twoPhase_);
+    workE_.setSize(nFaces_, 0);
+    workC2_.setSize(nFaces_, 0);
+    if (twoPhase_)
+    {
+        rho1L_.setSize(nFaces_, 1); rho1R_.setSize(nFaces_, 1);
+        rho2L_.setSize(nFaces_, 1); rho2R_.setSize(nFaces_, 1);
+        alpha0_.setSize(nCells); alphaRho10_.setSize(nCells);
+        dAlpha_.setSize(nCells); dAlphaRho1_.setSize(nCells);
+    }
+    rho0_.setSize(nCells); rhoU0_.setSize(nCells); rhoE0_.setSize(nCells);
+    dRho_.setSize(nCells); dRhoU_.setSize(nCells); dRhoE_.setSize(nCells);
+
+    if (restart)
+    {
+        Info<< "blastFluidSolver: restart from the conservative state of time "
+            << mesh.time().timeName() << endl;
+    }
+    else
+    {
+        if (twoPhase_)
+        {
+            alpha1Ptr_->correctBoundaryConditions();
+        }
+        conservativeFromPrimitive();
+    }
+    primitivesFromConservative();
+
+    if
+    (
+        IOstream::defaultPrecision() < 17
+     && mesh.time().writeFormat() == IOstream::ASCII
+    )
+    {
+        WarningInFunction
+            << "writePrecision " << IOstream::defaultPrecision()
+            << " < 17 with ascii output: a restart will not be bitwise"
+            << " exact (use writePrecision 17 or writeFormat binary)" << endl;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::blastFluidSolver::setSolid
+(
+    const volScalarField* alphaSolid,
+    const volVectorField* Usolid
+)
+{
+    alphaSolidPtr_ = alphaSolid;
+    UsolidPtr_ = Usolid;
+    if (alphaSolidPtr_ && gMax(alphaSolidPtr_->primitiveField()) > 0)
+    {
+        WarningInFunction
+            << "alphaSolid > 0 found, but the immersed-body forcing is not"
+            << " implemented yet: the solid is ignored." << endl;
+    }
+}
+
+
+Foam::scalar Foam::blastFluidSolver::maxDeltaT(const scalar maxCo) const
+{
+    const vectorField& U = U_.primitiveField();
+    scalar lambda = 0;
+    forAll(U, i)
+    {
+        lambda = max(lambda, (mag(U[i]) + c_[i])*CoGeom_[i]);
+    }
+    reduce(lambda, maxOp<scalar>());
+    return maxCo/max(lambda, VSMALL);
+}
+
+
+void Foam::blastFluidSolver::advance(const scalar dt)
+{
+    rho0_ = rho_.primitiveField();
+    rhoU0_ = rhoU_.primitiveField();
+    rhoE0_ = rhoE_.primitiveField();
+    if (twoPhase_)
+    {
+        alpha0_ = alpha1Ptr_->primitiveField();
+        alphaRho10_ = alphaRho1Ptr_->primitiveField();
+    }
+
+    // SSP Runge-Kutta (Shu & Osher): stage weights of the old state
+    static const scalar a1[] = {0};
+    static const scalar a2[] = {0, 0.5};
+    static const scalar a3[] = {0, 0.75, 1.0/3.0};
+    const scalar* a = (RKorder_ == 1 ? a1 : RKorder_ == 2 ? a2 : a3);
+
+    lowOrder_.primitiveFieldRef() = 0;
+    anyLowOrder_ = false;
+    const label maxAttempts = 4;
+    for (label attempt = 0; attempt < maxAttempts; ++attempt)
+    {
+        bool ok = true;
+        for (label s = 0; s < RKorder_ && ok; ++s)
+        {
+            ok = stage(a[s], dt);
+        }
+        if (ok && primitivesFromConservative(false))
+        {
+            if (attempt > 0)
+            {
+                Info<< "blastFluidSolver: step to " << mesh_.time().timeName()
+                    << " needed first-order reconstruction in "
+                    << returnReduce(label(sum(lowOrder_.primitiveField())), sumOp<label>())
+                    << " cells" << endl;
+            }
+            return;
+        }
+
+        if (attempt == maxAttempts - 1)
+        {
+            break;
+        }
+
+        // Non-physical state: restart the step from its initial state with
+        // first-order reconstruction around the bad cells (grown twice,
+        // then everywhere)
+        ++nRetries_;
+        anyLowOrder_ = true;
+        rho_.primitiveFieldRef() = rho0_;
+        rhoU_.primitiveFieldRef() = rhoU0_;
+        rhoE_.primitiveFieldRef() = rhoE0_;
+        if (twoPhase_)
+        {
+            alpha1Ptr_->primitiveFieldRef() = alpha0_;
+            alphaRho1Ptr_->primitiveFieldRef() = alphaRho10_;
+        }
+        if (attempt + 2 < maxAttempts)
+        {
+            growLowOrder();
+            growLowOrder();
+        }
+        else
+        {
+            lowOrder_.primitiveFieldRef() = 1;
+            lowOrder_.correctBoundaryConditions();
+        }
+        primitivesFromConservative(true);
+    }
+
+    // First order everywhere failed as well: stop naming time and cell
+    primitivesFromConservative(true);
+}
+
+
+Foam::scalar Foam::blastFluidSolver::totalMass() const
+{
+    return gSum(rho_.primitiveField()*mesh_.V());
+}
+
+
+Foam::scalar Foam::blastFluidSolver::totalEnergy() const
+{
+    return gSum(rhoE_.primitiveField()*mesh_.V());
+}
+
+
+Foam::scalar Foam::blastFluidSolver::maxPressure() const
+{
+    return gMax(p_.primitiveField());
+}
+
+
+void Foam::blastFluidSolver::report(Ostream& os) const
+{
+    static const char* limNames[] =
+        {"none", "minmod", "vanLeer", "vanAlbada", "MC", "superbee"};
+    os  << "blastFluidSolver: " << mixture_.size() << " material(s) "
+        << mixture_.materials() << nl
+        << "    flux " << fluidDict_.getOrDefault<word>("flux", "HLLC")
+        << ", limiter " << limNames[limiter_]
+        << ", SSP RK" << RKorder_
+        << ", Q-scheme " << (QActive_ ? "on" : "off");
+    if (QActive_)
+    {
+        os  << " (CQ " << CQ_ << ", CL " << CL_ << ")";
+    }
+    os  << nl;
+    forAll(mixture_.materials(), i)
+    {
+        os  << "    ";
+        mixture_.eos(i).write(os);
+    }
+    forAll(patchKind_, patchi)
+    {
+        static const char* kinds[] =
+            {"coupled", "reflective", "ghost", "-", "wedge"};
+        if (patchKind_[patchi] != SKIP)
+        {
+            os  << "    patch " << mesh_.boundary()[patchi].name() << ": "
+                << kinds[patchKind_[patchi]] << nl;
+        }
+    }
+    os  << endl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,143 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | jwlIbFoam: rock blasting with OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "JWL.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+namespace equationsOfState
+{
+    defineTypeNameAndDebug(JWL, 0);
+    addToRunTimeSelectionTable(equationOfState, JWL, dictionary);
+}
+}
+
+const Foam::wordList Foam::equationsOfState::JWL::presets
+({
+    "TNT", "PETN", "CompB", "HMX"
+});
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    // LLNL Explosives Handbook values (model.md section 3):
+    // rho0 kg/m3, A B GPa, R1 R2 omega, E0 GPa, D m/s, PCJ GPa
+    struct jwlPreset
+    {
+        const char* name;
+        double rho0, A, B, R1, R2, omega, E0, D, PCJ;
+    };
+
+    const jwlPreset presetTable[] =
+    {
+        {"TNT",   1630, 371.2, 3.231,  4.15, 0.95, 0.30, 7.0,  6930, 21.0},
+        {"PETN",  1770, 617.1, 16.926, 4.40, 1.20, 0.25, 10.1, 8300, 33.5},
+        {"CompB", 1717, 524.2, 7.678,  4.20, 1.10, 0.34, 8.5,  7980, 29.5},
+        {"HMX",   1891, 778.3, 7.071,  4.20, 1.00, 0.30, 10.5, 9110, 42.0}
+    };
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::equationsOfState::JWL::JWL
+(
+    const word& name,
+    const dictionary& dict
+)
+:
+    mieGruneisenEOS<JWL>(name, dict),
+    rho0_(0), A_(0), B_(0), R1_(0), R2_(0), omega_(0), E0_(0), D_(0), PCJ_(0),
+    rhoSmall_(0)
+{
+    word explosive;
+    if (dict.readIfPresent("explosive", explosive))
+    {
+        const jwlPreset* found = nullptr;
+        for (const jwlPreset& row : presetTable)
+        {
+            if (explosive == row.name) found = &row;
+        }
+        if (!found)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown explosive '" << explosive << "' for material "
+                << name << ". Presets: " << presets << exit(FatalIOError);
+        }
+        rho0_ = found->rho0;
+        A_ = found->A*1e9;
+        B_ = found->B*1e9;
+        R1_ = found->R1;
+        R2_ = found->R2;
+        omega_ = found->omega;
+        E0_ = found->E0*1e9;
+        D_ = found->D;
+        PCJ_ = found->PCJ*1e9;
+
+        // Every coefficient may be overridden
+        dict.readIfPresent("rho0", rho0_);
+        dict.readIfPresent("A", A_);
+        dict.readIfPresent("B", B_);
+        dict.readIfPresent("R1", R1_);
+        dict.readIfPresent("R2", R2_);
+        dict.readIfPresent("omega", omega_);
+        dict.readIfPresent("E0", E0_);
+        dict.readIfPresent("D", D_);
+        dict.readIfPresent("PCJ", PCJ_);
+    }
+    else
+    {
+        rho0_ = dict.get<scalar>("rho0");
+        A_ = dict.get<scalar>("A");
+        B_ = dict.get<scalar>("B");
+        R1_ = dict.get<scalar>("R1");
+        R2_ = dict.get<scalar>("R2");
+        omega_ = dict.get<scalar>("omega");
+        E0_ = dict.get<scalar>("E0");
+        D_ = dict.getOrDefault<scalar>("D", 0);
+        PCJ_ = dict.getOrDefault<scalar>("PCJ", 0);
+    }
+
+    const char* keys[] = {"rho0", "R1", "R2", "omega", "E0"};
+    const scalar values[] = {rho0_, R1_, R2_, omega_, E0_};
+    for (int i = 0; i < 5; ++i)
+    {
+        if (!(values[i] > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "JWL material " << name << ": entry '" << keys[i]
+                << "' must be strictly positive, got " << values[i]
+                << exit(FatalIOError);
+        }
+    }
+    if (A_ < 0 || B_ < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "JWL material " << name << ": A and B must be >= 0, got A "
+            << A_ << " B " << B_ << exit(FatalIOError);
+    }
+
+    rhoSmall_ = 1e-15*rho0_;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::equationsOfState::JWL::write(Ostream& os) const
+{
+    os  << name_ << ": JWL rho0 " << rho0_ << " A " << A_ << " B " << B_
+        << " R1 " << R1_ << " R2 " << R2_ << " omega " << omega_
+        << " E0 " << E0_ << " (constant-volume explosion pressure "
+        << pCV() << " Pa)" << nl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,299 @@
+/*---------------------------------------------------------------------------*\
+  jwlIbFoam: blast in fractured solids, built on OpenFOAM v1912
+-------------------------------------------------------------------------------
+License
+    GNU General Public License v3 or later (as OpenFOAM).
+
+Description
+    Diagnostics (energies, stresses, fragments, memory) and the state I/O of
+    femdemSolid.
+
+\*---------------------------------------------------------------------------*/
+
+#include "femdemSolid.H"
+#include "cohesiveLaw.H"
+#include "contactLaw.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    using namespace Foam;
+
+    //- Deformation gradient of triangle t
+    inline tensor2D defGrad
+    (
+        const UList<vector2D>& x,
+        const tensor2D& D,
+        const label t
+    )
+    {
+        const vector2D d1 = x[3*t + 1] - x[3*t];
+        const vector2D d2 = x[3*t + 2] - x[3*t];
+        return tensor2D
+        (
+            d1.x()*D.xx() + d2.x()*D.yx(), d1.x()*D.xy() + d2.x()*D.yy(),
+            d1.y()*D.xx() + d2.y()*D.yx(), d1.y()*D.xy() + d2.y()*D.yy()
+        );
+    }
+
+    template<class T>
+    std::size_t bytes(const UList<T>& l) { return l.size()*sizeof(T); }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::femdemSolid::elasticEnergy() const
+{
+    scalar energy = 0;
+    forAll(area0_, t)
+    {
+        const femdemMaterial& mat = materials_[triangleMaterial_[t]];
+        const tensor2D F = defGrad(x_, DmInv_[t], t);
+        const scalar Exx = 0.5*(F.xx()*F.xx() + F.yx()*F.yx() - 1);
+        const scalar Eyy = 0.5*(F.xy()*F.xy() + F.yy()*F.yy() - 1);
+        const scalar Exy = 0.5*(F.xx()*F.xy() + F.yx()*F.yy());
+        const symmTensor2D& S0 = mat.initialStress;
+        energy += area0_[t]*
+        (
+            0.5*mat.lambda*sqr(Exx + Eyy)
+          + mat.mu*(Exx*Exx + Eyy*Eyy + 2*Exy*Exy)
+          + S0.xx()*Exx + S0.yy()*Eyy + 2*S0.xy()*Exy
+        );
+    }
+    return energy;
+}
+
+
+Foam::scalar Foam::femdemSolid::kineticEnergy() const
+{
+    scalar energy = 0;
+    forAll(v_, i) energy += 0.5*magSqr(v_[i])/invMass_[i];
+    return energy;
+}
+
+
+Foam::vector2D Foam::femdemSolid::momentum() const
+{
+    vector2D p(Zero);
+    forAll(v_, i) p += v_[i]/invMass_[i];
+    return p;
+}
+
+
+Foam::femdemSolid::energyBudget Foam::femdemSolid::energies() const
+{
+    energyBudget e;
+    e.kinetic = kineticEnergy();
+    e.elastic = elasticEnergy();
+    e.jointStored = cohesive_->storedEnergy(*this);
+    e.fracture = -wJoint_ - (e.jointStored - jointStored0_);
+    e.damping = -wDamp_;
+    e.contact = -wContact_;
+    e.gravity = wGravity_;
+    e.external = wExt_;
+    e.initial = energy0_;
+    return e;
+}
+
+
+void Foam::femdemSolid::resetEnergyBudget()
+{
+    wTri_ = wDamp_ = wJoint_ = wContact_ = wGravity_ = wExt_ = 0;
+    jointStored0_ = cohesive_->storedEnergy(*this);
+    energy0_ = kineticEnergy() + elasticEnergy() + jointStored0_;
+}
+
+
+Foam::List<Foam::symmTensor2D> Foam::femdemSolid::stress() const
+{
+    List<symmTensor2D> sigma(area0_.size());
+    forAll(area0_, t)
+    {
+        const femdemMaterial& mat = materials_[triangleMaterial_[t]];
+        const tensor2D F = defGrad(x_, DmInv_[t], t);
+        const scalar Exx = 0.5*(F.xx()*F.xx() + F.yx()*F.yx() - 1);
+        const scalar Eyy = 0.5*(F.xy()*F.xy() + F.yy()*F.yy() - 1);
+        const scalar Exy = 0.5*(F.xx()*F.xy() + F.yx()*F.yy());
+        const scalar ltr = mat.lambda*(Exx + Eyy);
+        const tensor2D S
+        (
+            ltr + 2*mat.mu*Exx + mat.initialStress.xx(),
+            2*mat.mu*Exy + mat.initialStress.xy(),
+            2*mat.mu*Exy + mat.initialStress.xy(),
+            ltr + 2*mat.mu*Eyy + mat.initialStress.yy()
+        );
+        const tensor2D s = (F & S & F.T())/det(F);
+        sigma[t] = symmTensor2D(s.xx(), 0.5*(s.xy() + s.yx()), s.yy());
+    }
+    return sigma;
+}
+
+
+Foam::List<Foam::vector2D> Foam::femdemSolid::triangleVelocity() const
+{
+    List<vector2D> u(area0_.size());
+    forAll(u, t)
+    {
+        u[t] = (v_[3*t] + v_[3*t + 1] + v_[3*t + 2])/3;
+    }
+    return u;
+}
+
+
+Foam::scalarList Foam::femdemSolid::triangleDamage() const
+{
+    scalarList d(area0_.size(), scalar(0));
+    const labelList& edgeJoint = topo_.edgeJoint();
+    forAll(d, t)
+    {
+        for (label k = 0; k < 3; ++k)
+        {
+            const label j = edgeJoint[3*t + k];
+            if (j >= 0) d[t] = max(d[t], broken_[j] ? 1 : damage_[j]);
+        }
+    }
+    return d;
+}
+
+
+const Foam::continuousView& Foam::femdemSolid::view() const
+{
+    if (!view_.valid())
+    {
+        view_.reset(new continuousView(topo_));
+    }
+    view_->update(x_, broken_);
+    return *view_;
+}
+
+
+Foam::femdemSolid::fragmentData Foam::femdemSolid::fragments() const
+{
+    const continuousView& cv = view();
+    const label nF = cv.nFragments();
+    fragmentData fd;
+    fd.mass.setSize(nF, scalar(0));
+    fd.area.setSize(nF, scalar(0));
+    fd.centroid.setSize(nF, Zero);
+    fd.velocity.setSize(nF, Zero);
+    const labelList& frag = cv.fragmentOfTriangle();
+    forAll(area0_, t)
+    {
+        const label fr = frag[t];
+        const vector2D& a = x_[3*t];
+        const vector2D& b = x_[3*t + 1];
+        const vector2D& c = x_[3*t + 2];
+        const scalar A =
+            0.5*((b.x() - a.x())*(c.y() - a.y()) - (b.y() - a.y())*(c.x() - a.x()));
+        const scalar m = materials_[triangleMaterial_[t]].rho*area0_[t];
+        fd.mass[fr] += m;
+        fd.area[fr] += A;
+        fd.centroid[fr] += A*(a + b + c)/3;
+        fd.velocity[fr] += m*(v_[3*t] + v_[3*t + 1] + v_[3*t + 2])/3;
+    }
+    forAll(fd.mass, fr)
+    {
+        fd.centroid[fr] /= fd.area[fr];
+        fd.velocity[fr] /= fd.mass[fr];
+    }
+    return fd;
+}
+
+
+std::size_t Foam::femdemSolid::memoryBytes() const
+{
+    std::size_t b =
+        bytes(topo_.jointTriangleA()) + bytes(topo_.jointEdgeA())
+      + bytes(topo_.jointTriangleB()) + bytes(topo_.jointEdgeB())
+      + bytes(topo_.jointNodes()) + bytes(topo_.edgeJoint())
+      + bytes(topo_.boundaryTriangle()) + bytes(topo_.boundaryEdge())
+      + bytes(topo_.boundaryPatch())
+      + bytes(topo_.nodeVertex()) + bytes(topo_.initialPoints())
+      + bytes(triangleMaterial_) + bytes(DmInv_) + bytes(area0_)
+      + bytes(freeEdges_)
+      + bytes(x_) + bytes(v_) + bytes(f_) + bytes(invMass_) + bytes(fExt_)
+      + bytes(jointClass_) + bytes(jointLength0_) + bytes(damage_)
+      + bytes(broken_)
+      + bytes(fTri_) + bytes(fDamp_) + bytes(fJoint_) + bytes(fContact_)
+      + bytes(fLoad_) + bytes(vOld_);
+    for (const boundaryCondition& bc : bcs_)
+    {
+        b += bytes(bc.nodes) + bytes(bc.faces);
+    }
+    return b + contact_->memoryBytes();
+}
+
+
+void Foam::femdemSolid::writeState(Ostream& os) const
+{
+    const int oldPrecision = os.precision(17);
+    os.writeEntry("time", time_);
+    os.writeEntry("timeIndex", step_);
+    os.writeEntry("nNodes", x_.size());
+    os.writeEntry("nJoints", broken_.size());
+    os.writeEntry("x", x_);
+    os.writeEntry("v", v_);
+    os.writeEntry("damage", damage_);
+    os.writeEntry("broken", broken_);
+    os.writeEntry
+    (
+        "energyAccounts",
+        scalarList
+        ({wTri_, wDamp_, wJoint_, wContact_, wGravity_, wExt_, energy0_,
+          jointStored0_})
+    );
+    if (fExt_.size()) os.writeEntry("externalForce", fExt_);
+    os.precision(oldPrecision);
+}
+
+
+void Foam::femdemSolid::readState(const dictionary& dict)
+{
+    List<vector2D> x = dict.get<List<vector2D>>("x");
+    List<vector2D> v = dict.get<List<vector2D>>("v");
+    scalarList damage = dict.get<scalarList>("damage");
+    boolList broken = dict.get<boolList>("broken");
+    if (x.size() != x_.size() || v.size() != v_.size())
+    {
+        FatalIOErrorInFunction(dict)
+            << "entries 'x', 'v': " << x.size() << ", " << v.size()
+            << " nodes for a mesh of " << x_.size() << " nodes"
+            << exit(FatalIOError);
+    }
+    if (damage.size() != damage_.size() || broken.size() != broken_.size())
+    {
+        FatalIOErrorInFunction(dict)
+            << "entries 'damage', 'broken': sizes " << damage.size() << ", "
+            << broken.size() << " for " << broken_.size() << " joints"
+            << exit(FatalIOError);
+    }
+    x_.transfer(x);
+    v_.transfer(v);
+    damage_.transfer(damage);
+    broken_.transfer(broken);
+    nBroken_ = 0;
+    forAll(broken_, j) if (broken_[j]) ++nBroken_;
+    markFreeEdges();
+    view_.clear();
+
+    time_ = dict.get<scalar>("time");
+    step_ = dict.get<label>("timeIndex");
+    const scalarList acc = dict.get<scalarList>("energyAccounts");
+    if (acc.size() != 8)
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'energyAccounts' needs 8 values" << exit(FatalIOError);
+    }
+    wTri_ = acc[0]; wDamp_ = acc[1]; wJoint_ = acc[2]; wContact_ = acc[3];
+    wGravity_ = acc[4]; wExt_ = acc[5]; energy0_ = acc[6];
+    jointStored0_ = acc[7];
+    if (dict.found("externalForce"))
+    {
+        fExt_ = dict.get<List<vector2D>>("externalForce");
+    }
+}
+
+
+// ************************************************************************* //

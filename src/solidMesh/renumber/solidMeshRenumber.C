@@ -1,0 +1,212 @@
+/*---------------------------------------------------------------------------*\
+  jwlIbFoam: blast in fractured solids, built on OpenFOAM v1912
+-------------------------------------------------------------------------------
+License
+    GNU General Public License v3 or later (as OpenFOAM).
+\*---------------------------------------------------------------------------*/
+
+// METIS before any OpenFOAM header (see doc/developing.md)
+#include <metis.h>
+
+#include "solidMeshRenumber.H"
+#include "EdgeMap.H"
+#include "DynamicList.H"
+#include "error.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+using namespace Foam;
+
+// Triangle graph in compressed rows: triangles sharing an edge
+void triangleGraph
+(
+    const triangleMesh& mesh,
+    std::vector<idx_t>& xadj,
+    std::vector<idx_t>& adjncy
+)
+{
+    const List<triangleVertices>& tris = mesh.triangles();
+    labelList neighbour(3*tris.size(), -1);
+    EdgeMap<label> firstSide(3*tris.size());
+    forAll(tris, t)
+    {
+        for (label k = 0; k < 3; ++k)
+        {
+            const edge e(tris[t][k], tris[t][(k + 1) % 3]);
+            auto iter = firstSide.find(e);
+            if (iter.found())
+            {
+                neighbour[3*t + k] = *iter/3;
+                neighbour[*iter] = t;
+            }
+            else
+            {
+                firstSide.insert(e, 3*t + k);
+            }
+        }
+    }
+    xadj.assign(1, 0);
+    adjncy.clear();
+    adjncy.reserve(3*tris.size());
+    forAll(tris, t)
+    {
+        for (label k = 0; k < 3; ++k)
+        {
+            if (neighbour[3*t + k] >= 0)
+            {
+                adjncy.push_back(neighbour[3*t + k]);
+            }
+        }
+        xadj.push_back(adjncy.size());
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::labelList Foam::solidMeshRenumber::triangleOrder
+(
+    const triangleMesh& mesh,
+    const label blockSize
+)
+{
+    std::vector<idx_t> xadj, adjncy;
+    triangleGraph(mesh, xadj, adjncy);
+    idx_t n = mesh.nTriangles();
+    idx_t nParts = n/max(blockSize, label(1));
+    if (nParts < 2)
+    {
+        return identity(n);
+    }
+
+    // Recursive bisection: parts whose indices are close are close in space
+    idx_t nCon = 1, cut = 0;
+    std::vector<idx_t> part(n);
+    idx_t options[METIS_NOPTIONS];
+    METIS_SetDefaultOptions(options);
+    options[METIS_OPTION_NUMBERING] = 0;
+    const int status = METIS_PartGraphRecursive
+    (
+        &n, &nCon, xadj.data(), adjncy.data(), nullptr, nullptr, nullptr,
+        &nParts, nullptr, nullptr, options, &cut, part.data()
+    );
+    if (status != METIS_OK)
+    {
+        FatalErrorInFunction
+            << "METIS_PartGraphRecursive failed with status " << status
+            << " on " << n << " triangles" << exit(FatalError);
+    }
+
+    // Triangles by part, in their old order within a part
+    labelList count(nParts + 1, Zero);
+    for (const idx_t p : part)
+    {
+        ++count[p + 1];
+    }
+    for (label p = 0; p < nParts; ++p)
+    {
+        count[p + 1] += count[p];
+    }
+    labelList order(n);
+    for (label t = 0; t < n; ++t)
+    {
+        order[count[part[t]]++] = t;
+    }
+    return order;
+}
+
+
+Foam::triangleMesh Foam::solidMeshRenumber::reorder
+(
+    const triangleMesh& mesh,
+    const labelUList& newToOldTriangle
+)
+{
+    if (newToOldTriangle.size() != mesh.nTriangles())
+    {
+        FatalErrorInFunction
+            << newToOldTriangle.size() << " entries in the order of "
+            << mesh.nTriangles() << " triangles" << exit(FatalError);
+    }
+    labelList newPoint(mesh.nPoints(), -1);
+    label nPoints = 0;
+    List<triangleVertices> triangles(mesh.nTriangles());
+    labelList materials(mesh.nTriangles());
+    forAll(newToOldTriangle, t)
+    {
+        const label old = newToOldTriangle[t];
+        for (label k = 0; k < 3; ++k)
+        {
+            label& p = newPoint[mesh.triangles()[old][k]];
+            if (p < 0)
+            {
+                p = nPoints++;
+            }
+            triangles[t][k] = p;
+        }
+        materials[t] = mesh.triangleMaterials()[old];
+    }
+    // Points used by no triangle go last, in their old order
+    forAll(newPoint, i)
+    {
+        if (newPoint[i] < 0)
+        {
+            newPoint[i] = nPoints++;
+        }
+    }
+    List<vector2D> points(mesh.nPoints());
+    forAll(newPoint, i)
+    {
+        points[newPoint[i]] = mesh.points()[i];
+    }
+    List<edgeList> patchEdges(mesh.patchEdges());
+    for (edgeList& edges : patchEdges)
+    {
+        for (edge& e : edges)
+        {
+            e = edge(newPoint[e[0]], newPoint[e[1]]);
+        }
+    }
+    return triangleMesh
+    (
+        points, triangles, materials, mesh.materials(), mesh.patchNames(),
+        patchEdges
+    );
+}
+
+
+Foam::triangleMesh Foam::solidMeshRenumber::renumber
+(
+    const triangleMesh& mesh,
+    const label blockSize
+)
+{
+    return reorder(mesh, triangleOrder(mesh, blockSize));
+}
+
+
+Foam::scalar Foam::solidMeshRenumber::localNeighbourFraction
+(
+    const triangleMesh& mesh,
+    const label window
+)
+{
+    std::vector<idx_t> xadj, adjncy;
+    triangleGraph(mesh, xadj, adjncy);
+    label near = 0;
+    for (label t = 0; t < mesh.nTriangles(); ++t)
+    {
+        for (idx_t i = xadj[t]; i < xadj[t + 1]; ++i)
+        {
+            near += (mag(adjncy[i] - t) < window);
+        }
+    }
+    return scalar(near)/max(label(adjncy.size()), label(1));
+}
+
+
+// ************************************************************************* //

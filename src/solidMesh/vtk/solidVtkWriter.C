@@ -1,0 +1,521 @@
+/*---------------------------------------------------------------------------*\
+  jwlIbFoam: blast in fractured solids, built on OpenFOAM v1912
+-------------------------------------------------------------------------------
+License
+    GNU General Public License v3 or later (as OpenFOAM).
+\*---------------------------------------------------------------------------*/
+
+#include "solidVtkWriter.H"
+#include "foamVtkOutput.H"
+#include "foamVtkFormatter.H"
+#include "OSspecific.H"
+#include "error.H"
+
+#include <fstream>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(solidVtkWriter, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+using namespace Foam;
+
+// One DataArray of nComp floats per tuple from flattened values
+void writeFloats
+(
+    vtk::formatter& fmt,
+    const word& name,
+    const label nComp,
+    const UList<scalar>& values
+)
+{
+    fmt.openTag(vtk::fileTag::DATA_ARRAY)
+        .xmlAttr("type", "Float32")
+        .xmlAttr("Name", name)
+        .xmlAttr("NumberOfComponents", nComp)
+        .xmlAttr("format", fmt.name())
+        .closeTag();
+    fmt.writeSize(uint64_t(values.size())*sizeof(float));
+    for (const scalar v : values)
+    {
+        fmt.write(float(v));
+    }
+    fmt.flush();
+    fmt.endDataArray();
+}
+
+// One DataArray of labels
+void writeLabels(vtk::formatter& fmt, const word& name, const labelUList& values)
+{
+    fmt.beginDataArray<label>(name);
+    fmt.writeSize(uint64_t(values.size())*sizeof(label));
+    vtk::writeList(fmt, values);
+    fmt.flush();
+    fmt.endDataArray();
+}
+
+// Points with z = 0, flattened
+scalarList flatPoints(const UList<vector2D>& points)
+{
+    scalarList xyz(3*points.size());
+    forAll(points, i)
+    {
+        xyz[3*i] = points[i].x();
+        xyz[3*i + 1] = points[i].y();
+        xyz[3*i + 2] = 0;
+    }
+    return xyz;
+}
+
+void writePoints(vtk::formatter& fmt, const UList<vector2D>& points)
+{
+    fmt.tag(vtk::fileTag::POINTS);
+    writeFloats(fmt, "Points", 3, flatPoints(points));
+    fmt.endTag(vtk::fileTag::POINTS);
+}
+
+autoPtr<vtk::formatter> openFile
+(
+    std::ofstream& os,
+    const fileName& file,
+    const vtk::formatType format
+)
+{
+    mkDir(file.path());
+    os.open(file);
+    if (!os.good())
+    {
+        FatalErrorInFunction
+            << "Cannot open " << file << " for writing" << exit(FatalError);
+    }
+    return vtk::newFormatter(os, format);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::solidVtkWriter::checkField
+(
+    const word& name,
+    const label size,
+    const label expected,
+    const char* where
+) const
+{
+    if (!inStep_)
+    {
+        FatalErrorInFunction
+            << "Field " << name << " added outside beginStep/endStep of "
+            << seriesName_ << exit(FatalError);
+    }
+    if (size != expected)
+    {
+        FatalErrorInFunction
+            << where << " field " << name << " of " << seriesName_
+            << " has " << size << " values for " << expected << ' ' << where
+            << 's' << exit(FatalError);
+    }
+}
+
+
+void Foam::solidVtkWriter::writePvd() const
+{
+    std::ofstream os(directory_/seriesName_ + ".pvd");
+    autoPtr<vtk::formatter> fmt =
+        vtk::newFormatter(os, vtk::formatType::INLINE_ASCII);
+    fmt().xmlHeader()
+        .openTag(vtk::fileTag::VTK_FILE)
+        .xmlAttr("type", "Collection")
+        .xmlAttr("version", "0.1")
+        .closeTag();
+    fmt().tag("Collection");
+    for (label i = 0; i < series_.size(); ++i)
+    {
+        fmt().openTag(vtk::fileTag::DATA_SET)
+            .xmlAttr("timestep", series_[i].value())
+            .xmlAttr("file", series_[i].name())
+            .closeTag(true);
+    }
+    fmt().endTag("Collection").endTag(vtk::fileTag::VTK_FILE);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::solidVtkWriter::solidVtkWriter
+(
+    const fileName& directory,
+    const word& seriesName,
+    const vtk::formatType format
+)
+:
+    directory_(directory),
+    seriesName_(seriesName),
+    format_(format),
+    index_(0),
+    inStep_(false),
+    time_(0),
+    stepHasLines_(false)
+{
+    if (vtk::isLegacy(format) || vtk::isAppend(format))
+    {
+        FatalErrorInFunction
+            << "Only inline XML formats are supported for " << seriesName
+            << exit(FatalError);
+    }
+    mkDir(directory_);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::fileName Foam::solidVtkWriter::stepFile(const label i) const
+{
+    return directory_/seriesName_ + "_" + Foam::name(i) + ".vtu";
+}
+
+
+Foam::fileName Foam::solidVtkWriter::seriesFile() const
+{
+    return directory_/seriesName_ + ".vtu.series";
+}
+
+
+void Foam::solidVtkWriter::beginStep
+(
+    const scalar time,
+    const UList<vector2D>& points,
+    const UList<triangleVertices>& triangles
+)
+{
+    if (inStep_)
+    {
+        FatalErrorInFunction
+            << "beginStep of " << seriesName_ << " before endStep of step "
+            << index_ << exit(FatalError);
+    }
+    for (const triangleVertices& tri : triangles)
+    {
+        for (const label v : tri)
+        {
+            if (v < 0 || v >= points.size())
+            {
+                FatalErrorInFunction
+                    << "Triangle vertex " << v << " outside the "
+                    << points.size() << " points of " << seriesName_
+                    << exit(FatalError);
+            }
+        }
+    }
+    inStep_ = true;
+    time_ = time;
+    points_ = points;
+    triangles_ = triangles;
+    cellFieldNames_.clear();
+    cellFieldComponents_.clear();
+    cellFieldValues_.clear();
+    pointFieldNames_.clear();
+    pointFieldComponents_.clear();
+    pointFieldValues_.clear();
+    stepHasLines_ = false;
+}
+
+
+void Foam::solidVtkWriter::addLines
+(
+    const UList<vector2D>& points,
+    const edgeList& lines,
+    const UList<scalar>& lineValues
+)
+{
+    checkField
+    (
+        "lines", lineValues.size(),
+        lineValues.size() ? lines.size() : label(0), "line"
+    );
+    stepHasLines_ = true;
+    linePoints_ = points;
+    lines_ = lines;
+    lineValues_ = lineValues;
+}
+
+
+void Foam::solidVtkWriter::addTriangleField
+(
+    const word& name,
+    const UList<scalar>& values
+)
+{
+    checkField(name, values.size(), triangles_.size(), "triangle");
+    cellFieldNames_.append(name);
+    cellFieldComponents_.append(1);
+    cellFieldValues_.append(scalarList(values));
+}
+
+
+void Foam::solidVtkWriter::addTriangleField
+(
+    const word& name,
+    const UList<label>& values
+)
+{
+    checkField(name, values.size(), triangles_.size(), "triangle");
+    scalarList v(values.size());
+    forAll(values, i)
+    {
+        v[i] = values[i];
+    }
+    cellFieldNames_.append(name);
+    cellFieldComponents_.append(1);
+    cellFieldValues_.append(std::move(v));
+}
+
+
+void Foam::solidVtkWriter::addTriangleField
+(
+    const word& name,
+    const UList<vector2D>& values
+)
+{
+    checkField(name, values.size(), triangles_.size(), "triangle");
+    cellFieldNames_.append(name);
+    cellFieldComponents_.append(3);
+    cellFieldValues_.append(flatPoints(values));
+}
+
+
+void Foam::solidVtkWriter::addTriangleField
+(
+    const word& name,
+    const UList<symmTensor2D>& values
+)
+{
+    checkField(name, values.size(), triangles_.size(), "triangle");
+    // VTK symmetric tensor order: xx yy zz xy yz xz
+    scalarList v(6*values.size(), Zero);
+    forAll(values, i)
+    {
+        v[6*i] = values[i].xx();
+        v[6*i + 1] = values[i].yy();
+        v[6*i + 3] = values[i].xy();
+    }
+    cellFieldNames_.append(name);
+    cellFieldComponents_.append(6);
+    cellFieldValues_.append(std::move(v));
+}
+
+
+void Foam::solidVtkWriter::addPointField
+(
+    const word& name,
+    const UList<scalar>& values
+)
+{
+    checkField(name, values.size(), points_.size(), "point");
+    pointFieldNames_.append(name);
+    pointFieldComponents_.append(1);
+    pointFieldValues_.append(scalarList(values));
+}
+
+
+void Foam::solidVtkWriter::addPointField
+(
+    const word& name,
+    const UList<vector2D>& values
+)
+{
+    checkField(name, values.size(), points_.size(), "point");
+    pointFieldNames_.append(name);
+    pointFieldComponents_.append(3);
+    pointFieldValues_.append(flatPoints(values));
+}
+
+
+void Foam::solidVtkWriter::endStep()
+{
+    if (!inStep_)
+    {
+        FatalErrorInFunction
+            << "endStep of " << seriesName_ << " without beginStep"
+            << exit(FatalError);
+    }
+
+    const fileName file = stepFile(index_);
+    {
+        std::ofstream os;
+        autoPtr<vtk::formatter> fmtPtr = openFile(os, file, format_);
+        vtk::formatter& fmt = fmtPtr();
+
+        fmt.xmlHeader()
+            .beginVTKFile<vtk::fileTag::UNSTRUCTURED_GRID>();
+
+        fmt.beginFieldData();
+        fmt.writeTimeValue(time_);
+        fmt.endFieldData();
+
+        fmt.tag
+        (
+            vtk::fileTag::PIECE,
+            vtk::fileAttr::NUMBER_OF_POINTS, points_.size(),
+            vtk::fileAttr::NUMBER_OF_CELLS, triangles_.size()
+        );
+
+        writePoints(fmt, points_);
+
+        fmt.tag(vtk::fileTag::CELLS);
+        labelList connectivity(3*triangles_.size());
+        labelList offsets(triangles_.size());
+        forAll(triangles_, t)
+        {
+            for (label k = 0; k < 3; ++k)
+            {
+                connectivity[3*t + k] = triangles_[t][k];
+            }
+            offsets[t] = 3*(t + 1);
+        }
+        writeLabels(fmt, "connectivity", connectivity);
+        writeLabels(fmt, "offsets", offsets);
+        {
+            List<uint8_t> types(triangles_.size(), vtk::cellType::VTK_TRIANGLE);
+            fmt.beginDataArray<uint8_t>("types");
+            fmt.writeSize(uint64_t(types.size()));
+            vtk::writeList(fmt, types);
+            fmt.flush();
+            fmt.endDataArray();
+        }
+        fmt.endTag(vtk::fileTag::CELLS);
+
+        fmt.beginCellData();
+        forAll(cellFieldNames_, i)
+        {
+            writeFloats
+            (
+                fmt, cellFieldNames_[i], cellFieldComponents_[i],
+                cellFieldValues_[i]
+            );
+        }
+        fmt.endCellData();
+
+        fmt.beginPointData();
+        forAll(pointFieldNames_, i)
+        {
+            writeFloats
+            (
+                fmt, pointFieldNames_[i], pointFieldComponents_[i],
+                pointFieldValues_[i]
+            );
+        }
+        fmt.endPointData();
+
+        fmt.endPiece();
+        fmt.endTag(vtk::fileTag::UNSTRUCTURED_GRID);
+        fmt.endVTKFile();
+    }
+
+    series_.append(fileNameInstant(time_, file.name()));
+    vtk::seriesWriter::write(seriesFile(), series_);
+    writePvd();
+
+    if (stepHasLines_)
+    {
+        const fileName linesFile =
+            directory_/seriesName_ + "Lines_" + Foam::name(index_) + ".vtp";
+        writeLines(linesFile, linePoints_, lines_, lineValues_, format_);
+        lineSeries_.append(fileNameInstant(time_, linesFile.name()));
+        vtk::seriesWriter::write
+        (
+            directory_/seriesName_ + "Lines.vtp.series",
+            lineSeries_
+        );
+    }
+
+    ++index_;
+    inStep_ = false;
+}
+
+
+void Foam::solidVtkWriter::writeLines
+(
+    const fileName& file,
+    const UList<vector2D>& points,
+    const edgeList& lines,
+    const UList<scalar>& lineValues,
+    const vtk::formatType format
+)
+{
+    if (lineValues.size() && lineValues.size() != lines.size())
+    {
+        FatalErrorInFunction
+            << lineValues.size() << " values for " << lines.size()
+            << " lines in " << file << exit(FatalError);
+    }
+
+    // Only the points that the lines use, in order of first use
+    labelList newIndex(points.size(), -1);
+    DynamicList<vector2D> used(2*lines.size());
+    labelList connectivity(2*lines.size());
+    forAll(lines, i)
+    {
+        for (label k = 0; k < 2; ++k)
+        {
+            const label p = lines[i][k];
+            if (p < 0 || p >= points.size())
+            {
+                FatalErrorInFunction
+                    << "Line " << i << " uses point " << p << " outside the "
+                    << points.size() << " points, writing " << file
+                    << exit(FatalError);
+            }
+            if (newIndex[p] < 0)
+            {
+                newIndex[p] = used.size();
+                used.append(points[p]);
+            }
+            connectivity[2*i + k] = newIndex[p];
+        }
+    }
+    labelList offsets(lines.size());
+    forAll(offsets, i)
+    {
+        offsets[i] = 2*(i + 1);
+    }
+
+    std::ofstream os;
+    autoPtr<vtk::formatter> fmtPtr = openFile(os, file, format);
+    vtk::formatter& fmt = fmtPtr();
+
+    fmt.xmlHeader()
+        .beginVTKFile<vtk::fileTag::POLY_DATA>();
+    fmt.tag
+    (
+        vtk::fileTag::PIECE,
+        vtk::fileAttr::NUMBER_OF_POINTS, used.size(),
+        vtk::fileAttr::NUMBER_OF_LINES, lines.size()
+    );
+    writePoints(fmt, used);
+    fmt.tag(vtk::fileTag::LINES);
+    writeLabels(fmt, "connectivity", connectivity);
+    writeLabels(fmt, "offsets", offsets);
+    fmt.endTag(vtk::fileTag::LINES);
+    if (lineValues.size())
+    {
+        fmt.beginCellData();
+        writeFloats(fmt, "value", 1, lineValues);
+        fmt.endCellData();
+    }
+    fmt.endPiece();
+    fmt.endTag(vtk::fileTag::POLY_DATA);
+    fmt.endVTKFile();
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,110 @@
+"""Small helpers for the jwlIbFoam tutorials' post-processing (no PyFoam).
+
+read_field(case, time, name): internal field of an ascii OpenFOAM field as a
+numpy array (scalars: shape (n,), vectors: shape (n, 3)); a uniform field
+needs n.
+read_exact(case, time): columns of postProcessing/exactRiemann/<time>/exact.dat
+log_table(logfile): per-step (time, dt, maxP, mass, energy, minRho, minP)
+    from a jwlIbFoam log
+write_summary(path, case, figures): summary.json as doc/developing.md says.
+"""
+import json
+import os
+import re
+
+import numpy as np
+
+
+def _time_dir(case, time):
+    if isinstance(time, str):
+        return os.path.join(case, time)
+    # match the directory whose name parses to this value
+    best = None
+    for d in os.listdir(case):
+        try:
+            v = float(d)
+        except ValueError:
+            continue
+        if abs(v - time) <= 1e-9 * max(1.0, abs(time)):
+            best = d
+    if best is None:
+        raise FileNotFoundError(f"no time {time} in {case}")
+    return os.path.join(case, best)
+
+
+def latest_time(case):
+    times = []
+    for d in os.listdir(case):
+        try:
+            times.append((float(d), d))
+        except ValueError:
+            pass
+    return max(times)[1]
+
+
+def read_field(case, time, name, n=None):
+    text = open(os.path.join(_time_dir(case, time), name)).read()
+    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*(\d+)\s*\(", text)
+    if m:
+        kind, count = m.group(1), int(m.group(2))
+        body = text[m.end():]
+        if kind == "scalar":
+            vals = np.array(body.split(None, count)[:count], dtype=float)
+            return vals
+        vecs = re.findall(r"\(([^()]*)\)", body)[:count]
+        return np.array([[float(x) for x in v.split()] for v in vecs])
+    m = re.search(r"internalField\s+uniform\s+([^;]+);", text)
+    if m:
+        v = m.group(1).strip()
+        if v.startswith("("):
+            vec = [float(x) for x in v.strip("()").split()]
+            return np.tile(vec, (n or 1, 1))
+        return np.full(n or 1, float(v))
+    raise ValueError(f"cannot parse {name}")
+
+
+def read_exact(case, time):
+    d = _time_dir(os.path.join(case, "postProcessing", "exactRiemann"), time)
+    data = np.loadtxt(os.path.join(d, "exact.dat"))
+    head = open(os.path.join(d, "exact.dat")).readline()
+    info = dict(zip(head.split()[6::2], [float(x.rstrip(")"))
+                                          for x in head.split()[7::2]]))
+    return data, info
+
+
+def log_table(logfile):
+    rows = []
+    pat = re.compile(r"^Time = (\S+)\s+dt = (\S+)\s+maxP = (\S+)\s+mass = (\S+)"
+                     r"\s+energy = (\S+)\s+minRho = (\S+)\s+minP = (\S+)")
+    for line in open(logfile):
+        m = pat.match(line)
+        if m:
+            rows.append([float(x) for x in m.groups()])
+    return np.array(rows)
+
+
+def figure(name, value, reference=None, tolerance=None, error=None,
+           passed=None, relative=False):
+    """One summary entry; error defaults to |value - reference| (relative
+    if asked); pass defaults to error <= tolerance."""
+    if error is None and reference is not None:
+        error = abs(value - reference)
+        if relative:
+            error /= abs(reference)
+    if passed is None:
+        passed = True if tolerance is None else bool(error <= tolerance)
+    return {"name": name, "value": float(value),
+            "reference": None if reference is None else float(reference),
+            "error": None if error is None else float(error),
+            "tolerance": None if tolerance is None else float(tolerance),
+            "pass": bool(passed)}
+
+
+def write_summary(path, case, figures):
+    with open(path, "w") as fh:
+        json.dump({"case": case, "figures": figures}, fh, indent=1)
+    for f in figures:
+        print(f"{f['name']}: {f['value']:.6g}"
+              + ("" if f['tolerance'] is None else
+                 f" (error {f['error']:.3g}, tolerance {f['tolerance']:.3g})")
+              + ("" if f['pass'] else "  FAIL"))
