@@ -6,7 +6,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "bilinearCohesive.H"
-#include "cohesiveLawTemplates.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -25,44 +24,8 @@ namespace cohesiveLaws
 
 Foam::cohesiveLaws::bilinear::bilinear(const dictionary& dict)
 :
-    cohesiveLaw(dict)
+    curveCohesiveLaw<bilinearCurve>(dict)
 {}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::label Foam::cohesiveLaws::bilinear::addForces
-(
-    femdemSolid& solid,
-    UList<vector2D>& f
-) const
-{
-    return processJoints(curve_, solid, f);
-}
-
-
-Foam::scalar Foam::cohesiveLaws::bilinear::storedEnergy
-(
-    const femdemSolid& solid
-) const
-{
-    return storedEnergyOf(curve_, solid);
-}
-
-
-void Foam::cohesiveLaws::bilinear::traction
-(
-    const femdemJointProperties& P,
-    const scalar h,
-    const scalar o,
-    const scalar s,
-    scalar& damage,
-    scalar& sigma,
-    scalar& tau
-) const
-{
-    tractionOf(curve_, P, h, o, s, damage, sigma, tau);
-}
 
 
 // ************************************************************************* //

@@ -6,7 +6,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "munjizaCohesive.H"
-#include "cohesiveLawTemplates.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -25,7 +24,7 @@ namespace cohesiveLaws
 
 Foam::cohesiveLaws::munjiza::munjiza(const dictionary& dict)
 :
-    cohesiveLaw(dict)
+    curveCohesiveLaw<munjizaCurve>(dict)
 {
     const dictionary coeffs = dict.subOrEmptyDict("munjizaCoeffs");
     curve_.a = coeffs.getOrDefault<scalar>("a", 0.63);
@@ -50,42 +49,6 @@ Foam::cohesiveLaws::munjiza::munjiza(const dictionary& dict)
         sum += (i % 2 ? 4 : 2)*curve_.z(scalar(i)/n);
     }
     curve_.aSoft = sum/(3*n);
-}
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::label Foam::cohesiveLaws::munjiza::addForces
-(
-    femdemSolid& solid,
-    UList<vector2D>& f
-) const
-{
-    return processJoints(curve_, solid, f);
-}
-
-
-Foam::scalar Foam::cohesiveLaws::munjiza::storedEnergy
-(
-    const femdemSolid& solid
-) const
-{
-    return storedEnergyOf(curve_, solid);
-}
-
-
-void Foam::cohesiveLaws::munjiza::traction
-(
-    const femdemJointProperties& P,
-    const scalar h,
-    const scalar o,
-    const scalar s,
-    scalar& damage,
-    scalar& sigma,
-    scalar& tau
-) const
-{
-    tractionOf(curve_, P, h, o, s, damage, sigma, tau);
 }
 
 
