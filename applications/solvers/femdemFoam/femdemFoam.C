@@ -36,9 +36,15 @@ Description
                                    // (default: every controlDict step)
         vtk           true;        // VTK series at write times
         reactions     (top bottom);// patches with fixed/velocity conditions
+        progressInterval 5;        // wall-clock seconds between progress
+                                   // lines (default 5, 0: every step)
     }
     \endverbatim
     trackEnergy defaults to true in femdemFoam.
+
+    SIGINT (Ctrl-C) or SIGTERM: the state of the current step is written
+    (a time directory with femdemState, restartable) and the run ends
+    normally, exit status 0 (stopOnSignal). A second signal kills at once.
 
 \*---------------------------------------------------------------------------*/
 
@@ -51,86 +57,14 @@ Description
 #include "femdemSolid.H"
 #include "contactLaw.H"
 #include "solidVtkWriter.H"
+#include "femdemOutput.H"
+#include "stopOnSignal.H"
+#include "runProgress.H"
 #include <cmath>
 
 using namespace Foam;
+using namespace Foam::femdemOutput;
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-void writeHeader(Ostream& os, const word& object)
-{
-    os  << "FoamFile" << nl << "{" << nl
-        << "    version     2.0;" << nl
-        << "    format      ascii;" << nl
-        << "    class       dictionary;" << nl
-        << "    object      " << object << ";" << nl
-        << "}" << nl << nl;
-}
-
-
-void writeVtk
-(
-    solidVtkWriter& writer,
-    const femdemSolid& solid,
-    const fileName& vtkDir,
-    const scalar time
-)
-{
-    const continuousView& view = solid.view();
-    writer.beginStep(time, view.points(), view.triangles());
-    writer.addTriangleField("stress", solid.stress());
-    writer.addTriangleField("velocity", solid.triangleVelocity());
-    writer.addTriangleField("damage", solid.triangleDamage());
-    writer.addTriangleField("material", solid.triangleMaterial());
-    writer.addTriangleField("fragment", view.fragmentOfTriangle());
-    writer.endStep();
-
-    // Broken joints as lines along their mid-line
-    const List<jointNodeList>& jn = solid.topology().jointNodes();
-    DynamicList<vector2D> pts;
-    DynamicList<edge> lines;
-    DynamicList<scalar> length;
-    forAll(jn, j)
-    {
-        if (!solid.jointBroken()[j]) continue;
-        const jointNodeList& n = jn[j];
-        const label i = pts.size();
-        pts.append(0.5*(solid.x()[n[0]] + solid.x()[n[2]]));
-        pts.append(0.5*(solid.x()[n[1]] + solid.x()[n[3]]));
-        lines.append(edge(i, i + 1));
-        length.append(solid.jointLength0()[j]);
-    }
-    solidVtkWriter::writeLines
-    (
-        vtkDir/("cracks_" + Foam::name(writer.nSteps() - 1) + ".vtp"),
-        pts,
-        edgeList(lines),
-        length
-    );
-}
-
-
-void writeCracks(const femdemSolid& solid, const fileName& file)
-{
-    OFstream os(file);
-    os.precision(10);
-    os  << "# broken joints: x0 y0 x1 y1 (initial positions of face p)" << nl;
-    const List<jointNodeList>& jn = solid.topology().jointNodes();
-    const List<vector2D>& X0 = solid.topology().initialPoints();
-    const labelList& vertex = solid.topology().nodeVertex();
-    forAll(jn, j)
-    {
-        if (!solid.jointBroken()[j]) continue;
-        const vector2D& a = X0[vertex[jn[j][0]]];
-        const vector2D& b = X0[vertex[jn[j][1]]];
-        os  << a.x() << ' ' << a.y() << ' ' << b.x() << ' ' << b.y() << nl;
-    }
-}
-
-} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -176,6 +110,14 @@ int main(int argc, char *argv[])
             << "entry 'output/logInterval' must be positive, got "
             << logInterval << exit(FatalIOError);
     }
+    const scalar progressInterval =
+        outDict.getOrDefault<scalar>("progressInterval", 5);
+    if (progressInterval < 0)
+    {
+        FatalIOErrorInFunction(properties)
+            << "entry 'output/progressInterval' must not be negative, got "
+            << progressInterval << exit(FatalIOError);
+    }
     const bool doVtk = outDict.getOrDefault<bool>("vtk", true);
     const wordList reactionPatches =
         outDict.getOrDefault<wordList>("reactions", wordList());
@@ -207,10 +149,8 @@ int main(int argc, char *argv[])
 
     // Restart from the state of the start time, if written
     const fileName stateFile = runTime.timePath()/"femdemState";
-    if (isFile(stateFile))
+    if (readState(solid, stateFile))
     {
-        IFstream is(stateFile);
-        solid.readState(dictionary(is));
         Info<< "Restarted from " << stateFile << " (solid time "
             << solid.time() << ", " << solid.nBrokenJoints()
             << " broken joints)" << nl << endl;
@@ -331,6 +271,9 @@ int main(int argc, char *argv[])
     scalar nextLog = runTime.value() + logInterval;
     const scalar eps = 1e-9*runTime.deltaTValue();
 
+    stopOnSignal stop;
+    runProgress progress(runTime, progressInterval);
+
     Info<< "Starting time loop" << nl << endl;
     while (runTime.run())
     {
@@ -345,13 +288,15 @@ int main(int argc, char *argv[])
             logState();
             while (nextLog <= runTime.value() + eps) nextLog += logInterval;
         }
+        progress.report();
+
+        // On SIGINT/SIGTERM: makes this a write time and the last step
+        stop.check(runTime);
 
         if (runTime.writeTime())
         {
             mkDir(runTime.timePath());
-            OFstream os(runTime.timePath()/"femdemState");
-            writeHeader(os, "femdemState");
-            solid.writeState(os);
+            writeState(solid, runTime.timePath()/"femdemState");
             writeCracks(solid, postDir/("cracks_" + runTime.timeName() + ".dat"));
             if (doVtk)
             {
