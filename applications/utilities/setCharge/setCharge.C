@@ -73,6 +73,12 @@ public:
             a_ = dict.get<vector>("centre");
             radius_ = dict.get<scalar>("radius");
             axis_ = dict.getOrDefault<vector>("axis", vector(0, 0, 1));
+            if (!(mag(axis_) > 0))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entry 'axis' must be a non-zero vector"
+                    << exit(FatalIOError);
+            }
             axis_ /= mag(axis_);
         }
         else if (type == "cylinder")
@@ -80,6 +86,12 @@ public:
             a_ = dict.get<vector>("point1");
             b_ = dict.get<vector>("point2");
             radius_ = dict.get<scalar>("radius");
+            if (!(mag(b_ - a_) > 0))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entries 'point1' and 'point2' must differ"
+                    << exit(FatalIOError);
+            }
         }
         else
         {
@@ -180,10 +192,19 @@ int main(int argc, char *argv[])
             << "Entry 'nSample' must be >= 1" << exit(FatalIOError);
     }
 
+    // Each charge keeps its dictionary, named after setChargeDict, so that
+    // errors name the file, the charge and its line
     PtrList<chargeShape> charges;
+    PtrList<dictionary> chargeDicts;
     {
         const PtrList<entry> entries(dict.lookup("charges"));
+        if (entries.empty())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'charges' lists no charge" << exit(FatalIOError);
+        }
         charges.setSize(entries.size());
+        chargeDicts.setSize(entries.size());
         forAll(entries, i)
         {
             if (!entries[i].isDict())
@@ -192,9 +213,12 @@ int main(int argc, char *argv[])
                     << "Entry 'charges': each charge is 'shape { ... }'"
                     << exit(FatalIOError);
             }
+            chargeDicts.set(i, new dictionary(dict, entries[i].dict()));
+            chargeDicts[i].name() =
+                dict.objectPath() + ".charges." + entries[i].keyword();
             charges.set
             (
-                i, new chargeShape(entries[i].keyword(), entries[i].dict())
+                i, new chargeShape(entries[i].keyword(), chargeDicts[i])
             );
         }
     }
@@ -302,6 +326,20 @@ int main(int argc, char *argv[])
             << " partially; mass " << chargeMass[c] << " kg, energy "
             << chargeMass[c]/rho0*E0 << " J" << endl;
     }
+    // A charge that covers no cell is a mistake (outside the mesh, or too
+    // small for nSample): stop before anything is written
+    forAll(charges, c)
+    {
+        if (nFull[c] + nPartial[c] == 0)
+        {
+            FatalIOErrorInFunction(chargeDicts[c])
+                << "Charge " << c << " (" << charges[c].type()
+                << ") in entry 'charges' covers no cell of the mesh (bounds "
+                << mesh.bounds() << "): check its position and size, or"
+                << " raise 'nSample'" << exit(FatalIOError);
+        }
+    }
+
     Info<< "Explosive " << m1 << ": rho0 " << rho0 << " kg/m3, E0 " << E0
         << " J/m3, constant-volume explosion pressure " << jwl->pCV()
         << " Pa" << nl

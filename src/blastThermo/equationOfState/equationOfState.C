@@ -54,6 +54,27 @@ Foam::scalar Foam::equationOfState::readPositiveOrDefault
 }
 
 
+void Foam::equationOfState::checkEntries
+(
+    const dictionary& dict,
+    const wordList& valid
+) const
+{
+    for (const entry& e : dict)
+    {
+        const word key(e.keyword());
+        if (key != "equationOfState" && !valid.found(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown entry '" << key << "' for material " << name_
+                << " (equationOfState "
+                << dict.getOrDefault<word>("equationOfState", "?")
+                << "). Valid entries: " << valid << exit(FatalIOError);
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::equationOfState::equationOfState

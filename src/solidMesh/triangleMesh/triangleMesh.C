@@ -8,6 +8,7 @@ License
 #include "triangleMesh.H"
 #include "Time.H"
 #include "IOdictionary.H"
+#include "EdgeMap.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -107,6 +108,53 @@ void Foam::triangleMesh::validate(const dictionary* dictPtr) const
               + " has material index " + Foam::name(m) + " but only "
               + Foam::name(materials_.size()) + " materials are listed"
             );
+        }
+    }
+
+    // Neighbours traversing an edge the same way (duplicate or overlapping
+    // triangles) and edges of three or more triangles. jointTopology stops
+    // on these too, but only here can the error name the file and entry.
+    if (dictPtr)
+    {
+        EdgeMap<label> firstUse(2*triangles_.size());
+        forAll(triangles_, t)
+        {
+            const triangleVertices& tri = triangles_[t];
+            for (label k = 0; k < 3; ++k)
+            {
+                const label a = tri[k], b = tri[(k + 1) % 3];
+                auto iter = firstUse.find(edge(a, b));
+                if (!iter.found())
+                {
+                    firstUse.insert(edge(a, b), 3*t + k);
+                    continue;
+                }
+                const label other = *iter;
+                if (other < 0)
+                {
+                    meshError
+                    (
+                        dictPtr,
+                        "entry 'triangles': Non-manifold edge ("
+                      + Foam::name(a) + " " + Foam::name(b) + ") shared by"
+                        " three or more triangles, including triangle "
+                      + Foam::name(t)
+                    );
+                }
+                const label tOther = other/3;
+                if (triangles_[tOther][other % 3] == a)
+                {
+                    meshError
+                    (
+                        dictPtr,
+                        "entry 'triangles': triangles " + Foam::name(tOther)
+                      + " and " + Foam::name(t) + " traverse edge ("
+                      + Foam::name(a) + " " + Foam::name(b) + ") in the same"
+                        " direction (duplicate or overlapping triangles)"
+                    );
+                }
+                *iter = -1;
+            }
         }
     }
 

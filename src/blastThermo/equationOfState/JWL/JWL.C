@@ -58,6 +58,15 @@ Foam::equationsOfState::JWL::JWL
     rho0_(0), A_(0), B_(0), R1_(0), R2_(0), omega_(0), E0_(0), D_(0), PCJ_(0),
     rhoSmall_(0)
 {
+    checkEntries
+    (
+        dict,
+        wordList
+        ({
+            "explosive", "rho0", "A", "B", "R1", "R2", "omega", "E0", "D", "PCJ"
+        })
+    );
+
     word explosive;
     if (dict.readIfPresent("explosive", explosive))
     {

@@ -30,6 +30,8 @@ Foam::equationsOfState::idealGas::idealGas
     gamma_(dict.getOrDefault<scalar>("gamma", 1.4)),
     Cv_(readPositiveOrDefault(dict, "Cv", 718))
 {
+    checkEntries(dict, wordList({"gamma", "Cv"}));
+
     if (!(gamma_ > 1))
     {
         FatalIOErrorInFunction(dict)

@@ -28,6 +28,8 @@ Foam::equationsOfState::stiffenedGas::stiffenedGas
     gamma_(dict.get<scalar>("gamma")),
     pInf_(dict.get<scalar>("pInf"))
 {
+    checkEntries(dict, wordList({"gamma", "pInf"}));
+
     if (!(gamma_ > 1) || pInf_ < 0)
     {
         FatalIOErrorInFunction(dict)

@@ -1,0 +1,353 @@
+#!/bin/bash
+# Bad-input table: every executable must refuse bad input cleanly.
+# A base case per program is prepared once (mesh, fields) and checked to run;
+# each case copies a base, breaks one thing, runs the program and checks
+#   (1) a non-zero exit status,
+#   (2) no crash: no signal, no segmentation fault / floating point exception
+#       stack trace, no core file,
+#   (3) the log names the file and the entry (or keyword / value) at fault,
+#   (4) the input (time directories, constant/, system/) is untouched.
+# One '>>' line per case, then '>> N cases, M failed'. The table of cases is
+# doc/badInput.md; cases that still need a fix in code being edited elsewhere
+# are listed at the end as pending (not run).
+cd "$JWLIBFOAM_TEST_DIR" || exit 1
+rm -rf bases cases
+mkdir bases cases
+top=$(pwd)
+tutorials=$JWLIBFOAM_TUTORIALS
+header() { printf 'FoamFile { version 2.0; format ascii; class dictionary; object %s; }\n' "$1"; }
+setEntry() {  # file key value: replace the line 'key ...;'
+    sed -i "s/^$2 .*/$2 $3;/" "$1"
+}
+baseFail=0
+baseline() {  # name command...: a base case must run cleanly
+    local name=$1; shift
+    if (cd "bases/$name" && "$@" > "log.baseline.$1" 2>&1); then
+        echo ">> base $name: $* runs"
+    else
+        echo ">> base $name: $* fails on the unbroken input  <-- FAIL"
+        tail -20 "bases/$name/log.baseline.$1"
+        baseFail=1
+    fi
+}
+
+# ----------------------------------------------------------------- bases
+# sod: one material (ideal gas), 20 cells, two steps
+cp -r "$tutorials/jwlIbFoam/sodShockTube" bases/sod
+(
+    cd bases/sod && ./Allclean > /dev/null 2>&1
+    rm -rf mesh* && cp -r 0.orig 0
+    setEntry system/blockMeshDict nx 20
+    setEntry system/controlDict endTime 0.02
+    setEntry system/controlDict writeInterval 0.01
+    blockMesh > log.blockMesh 2>&1 && setFields > log.setFields 2>&1
+) || { echo ">> base sod: blockMesh/setFields failed  <-- FAIL"; exit 1; }
+# restart: sod run to 0.02 (written 0.01, 0.02), restarted from latestTime
+cp -r bases/sod bases/restart
+baseline restart jwlIbFoam
+setEntry bases/restart/system/controlDict startFrom latestTime
+setEntry bases/restart/system/controlDict endTime 0.04
+
+# tnt: TNT products + air, 10x10 cells, fields before setCharge
+cp -r "$tutorials/jwlIbFoam/tntCharge2D" bases/tnt
+(
+    cd bases/tnt && ./Allclean > /dev/null 2>&1
+    rm -rf parallel VTK && find . -maxdepth 1 -name "[0-9]*" ! -name 0.orig -exec rm -rf {} + && cp -r 0.orig 0
+    setEntry system/blockMeshDict n 10
+    setEntry system/controlDict endTime 2e-6
+    setEntry system/controlDict writeInterval 2e-6
+    blockMesh > log.blockMesh 2>&1
+) || { echo ">> base tnt: blockMesh failed  <-- FAIL"; exit 1; }
+cp -r bases/tnt bases/tntCharged
+baseline tntCharged setCharge
+baseline tntCharged jwlIbFoam
+rm -rf bases/tntCharged/2e-06
+
+# bar: FEMDEM rectangle, a few triangles, two steps
+mkdir -p bases/bar/system bases/bar/constant
+{ header controlDict; cat <<'D'; } > bases/bar/system/controlDict
+application femdemFoam; startFrom latestTime; startTime 0; stopAt endTime;
+endTime 4e-6; deltaT 2e-6; writeControl runTime; writeInterval 2e-6;
+D
+{ header femdemMeshDict; cat <<'D'; } > bases/bar/system/femdemMeshDict
+targetSize 0.01;
+minAngle 20;
+solids { bar { type rectangle; min (0 0); max (0.03 0.02); material rock;
+               patches (bottom right top left); } }
+D
+{ header femdemProperties; cat <<'D'; } > bases/bar/constant/femdemProperties
+cohesiveLaw munjiza;
+contactLaw potential;
+materials { rock { E 10e9; nu 0.25; rho 2500; tensileStrength 2e6;
+                   cohesion 8e6; frictionAngle 30; GI 20; GII 200; dampingRatio 0.1; } }
+boundaryConditions { left { type fixed; } right { type velocity; value (3 0.5); } }
+output { vtk false; reactions (left right); }
+D
+baseline bar femdemMesh
+cp -r bases/bar bases/barRun
+baseline barRun femdemFoam
+baseline barRun femdemMeshCheck
+
+# square: a unit square in gmsh 2.2 format, two triangles, one material
+mkdir -p bases/square/constant
+cat > bases/square/square.msh <<'D'
+$MeshFormat
+2.2 0 8
+$EndMeshFormat
+$PhysicalNames
+2
+1 1 "walls"
+2 2 "rock"
+$EndPhysicalNames
+$Nodes
+4
+1 0 0 0
+2 1 0 0
+3 1 1 0
+4 0 1 0
+$EndNodes
+$Elements
+6
+1 1 2 1 1 1 2
+2 1 2 1 1 2 3
+3 1 2 1 1 3 4
+4 1 2 1 1 4 1
+5 2 2 2 1 1 2 3
+6 2 2 2 1 1 3 4
+$EndElements
+D
+cp -r bases/square bases/squareRun
+baseline squareRun gmshToFemdem square.msh
+[ $baseFail = 0 ] || { echo ">> base cases do not run: no table"; exit 1; }
+
+# ----------------------------------------------------------------- cases
+nCases=0
+nFailed=0
+inputSum() {  # checksum of the input: time directories, constant, system
+    find constant system [0-9]* -type f 2>/dev/null | sort | xargs -r md5sum | md5sum
+}
+prep() {  # name base: a fresh copy of the base; cwd = the copy
+    rm -rf "$top/cases/$1"
+    cp -r "$top/bases/$2" "$top/cases/$1"
+    cd "$top/cases/$1" || exit 1
+    rm -f log.*
+}
+check() {  # name file entry command...: run in the prepared copy and judge
+    local name=$1 file=$2 entry=$3; shift 3
+    local before after rc msg problems=""
+    before=$(inputSum)
+    "$@" > "log.$1" 2>&1
+    rc=$?
+    after=$(inputSum)
+    local log="log.$1"
+    msg=$(awk '/FOAM FATAL/ { f = 1; next } f && NF { print; exit }' "$log" \
+          | sed 's/^ *//; s/ *$//' | cut -c1-100)
+    [ $rc = 0 ] && problems="$problems exit status 0;"
+    if [ $rc -ge 128 ] \
+    || grep -v '^trapFpe' "$log" | grep -qiE 'segmentation|sigsegv|sigfpe|floating point exception|core dumped|stack trace' \
+    || compgen -G 'core*' > /dev/null
+    then
+        problems="$problems crashed (exit $rc);"
+    fi
+    # file and entry must be named by the error message itself
+    sed -n '/FOAM FATAL/,$p' "$log" > "$log.error"
+    grep -qF -- "$file" "$log.error" || problems="$problems file '$file' not named;"
+    grep -qF -- "$entry" "$log.error" || problems="$problems '$entry' not named;"
+    [ "$before" = "$after" ] || problems="$problems input changed;"
+    nCases=$((nCases + 1))
+    if [ -z "$problems" ]; then
+        echo ">> $name: ok ($msg)"
+    else
+        nFailed=$((nFailed + 1))
+        echo ">> $name: ($msg)$problems  <-- FAIL"
+        sed -n '/FOAM FATAL/,/FOAM exiting/p' "$log" | head -12 | sed 's/^/   /'
+    fi
+    cd "$top" || exit 1
+}
+
+# --- jwlIbFoam: constant/thermophysicalProperties
+prep thermoMissingMaterials sod
+sed -i '/^materials/d' constant/thermophysicalProperties
+check thermoMissingMaterials thermophysicalProperties "'materials'" jwlIbFoam
+
+prep thermoMisspeltGamma sod
+sed -i 's/gamma 1.4/gama 1.4/' constant/thermophysicalProperties
+check thermoMisspeltGamma thermophysicalProperties "'gama'" jwlIbFoam
+
+prep thermoUnknownEquationOfState sod
+sed -i 's/equationOfState idealGas/equationOfState idealGaz/' constant/thermophysicalProperties
+check thermoUnknownEquationOfState thermophysicalProperties idealGaz jwlIbFoam
+
+prep idealGasGammaOne sod
+sed -i 's/gamma 1.4/gamma 1/' constant/thermophysicalProperties
+check idealGasGammaOne thermophysicalProperties "'gamma'" jwlIbFoam
+
+prep stiffenedGasNegativePInf sod
+sed -i 's/equationOfState idealGas; gamma 1.4; Cv 718;/equationOfState stiffenedGas; gamma 4.4; pInf -6e8;/' \
+    constant/thermophysicalProperties
+check stiffenedGasNegativePInf thermophysicalProperties pInf jwlIbFoam
+
+prep jwlOmegaZero tntCharged
+sed -i 's/explosive       TNT;/explosive TNT; omega 0;/' constant/thermophysicalProperties
+check jwlOmegaZero thermophysicalProperties "'omega'" jwlIbFoam
+
+prep jwlNegativeRho0 tntCharged
+sed -i 's/explosive       TNT;/explosive TNT; rho0 -1630;/' constant/thermophysicalProperties
+check jwlNegativeRho0 thermophysicalProperties "'rho0'" jwlIbFoam
+
+prep jwlUnknownExplosive tntCharged
+sed -i 's/explosive       TNT;/explosive TNTX;/' constant/thermophysicalProperties
+check jwlUnknownExplosive thermophysicalProperties "'TNTX'" jwlIbFoam
+
+# --- jwlIbFoam: system/blastFluidProperties
+prep unknownFlux sod
+setEntry system/blastFluidProperties flux HLLX
+check unknownFlux blastFluidProperties HLLX jwlIbFoam
+
+prep unknownLimiter sod
+setEntry system/blastFluidProperties limiter vanLeerr
+check unknownLimiter blastFluidProperties vanLeerr jwlIbFoam
+
+prep RKorder4 sod
+setEntry system/blastFluidProperties RKorder 4
+check RKorder4 blastFluidProperties "'RKorder'" jwlIbFoam
+
+# --- jwlIbFoam: fields and controlDict
+prep nanInP sod
+awk '/^internalField/ { f = 1 } f && $0 == "1" && !done { print "nan"; done = 1; next } 1' \
+    ../../bases/sod/0/p > 0/p
+check nanInP "0/p" "'nan'" jwlIbFoam
+
+prep missingU sod
+rm 0/U
+check missingU "0/U" "cannot find file" jwlIbFoam
+
+prep missingEndTime sod
+sed -i '/^endTime/d' system/controlDict
+check missingEndTime controlDict "'endTime'" jwlIbFoam
+
+# --- jwlIbFoam: restart from a damaged latest time
+prep restartTruncatedP restart
+f=0.02/p; head -c $(( $(stat -c %s $f) / 2 )) $f > $f.half && mv $f.half $f
+check restartTruncatedP "0.02/p" "FOAM FATAL IO ERROR" jwlIbFoam
+
+prep restartMissingP restart
+rm 0.02/p
+check restartMissingP "0.02/p" "cannot find file" jwlIbFoam
+
+prep restartMissingRhoU restart
+rm 0.02/rhoU
+check restartMissingRhoU "time 0.02" "rhoU" jwlIbFoam
+
+# --- setCharge
+prep chargeOutsideDomain tnt
+sed -i 's/centre (0 0 0)/centre (5 5 0)/' system/setChargeDict
+check chargeOutsideDomain setChargeDict "'charges'" setCharge
+
+prep setChargeMissingRadius tnt
+sed -i 's/ radius 0.05;//' system/setChargeDict
+check setChargeMissingRadius setChargeDict "'radius'" setCharge
+
+prep setChargeUnknownShape tnt
+sed -i 's/circle {/ellipse {/' system/setChargeDict
+check setChargeUnknownShape setChargeDict "'ellipse'" setCharge
+
+prep setChargeUnknownExplosive tnt
+sed -i 's/explosive       TNT;/explosive TNTX;/' constant/thermophysicalProperties
+check setChargeUnknownExplosive thermophysicalProperties "'TNTX'" setCharge
+
+prep setChargeOneMaterial tnt
+sed -i 's/^materials (products air);/materials (air);/' constant/thermophysicalProperties
+check setChargeOneMaterial thermophysicalProperties "'materials'" setCharge
+
+# --- femdemFoam: constant/femdemProperties
+femdemCase() {  # name sed-expression entry
+    prep "$1" bar
+    sed -i "$2" constant/femdemProperties
+    check "$1" femdemProperties "$3" femdemFoam
+}
+femdemCase zeroE 's/E 10e9/E 0/' "'E'"
+femdemCase nuHalf 's/nu 0.25/nu 0.5/' "'nu'"
+femdemCase zeroRho 's/rho 2500/rho 0/' "'rho'"
+femdemCase negativeGI 's/GI 20;/GI -20;/' "'GI'"
+femdemCase misspeltTensileStrength 's/tensileStrength/tensilStrength/' "'tensileStrength'"
+femdemCase missingMaterial 's/materials { rock/materials { granite/' "'rock'"
+femdemCase unknownCohesiveLaw 's/cohesiveLaw munjiza/cohesiveLaw munjitza/' "'munjitza'"
+femdemCase unknownContactLaw 's/contactLaw potential/contactLaw potentiall/' "'potentiall'"
+femdemCase unknownBoundaryType 's/type velocity/type velocty/' "velocty"
+femdemCase unknownBoundaryPatch 's/left { type fixed; }/lft { type fixed; }/' "'lft'"
+
+# --- femdemFoam / femdemMeshCheck: constant/solidMesh
+invertFirst='s/^(triangles\s+\d+ \( \( )(\d+) (\d+) (\d+)/$1$2 $4 $3/'
+duplicateFirst='s/^(triangles\s+)(\d+) \( (\( \d+ \d+ \d+ \))/$1.($2+1)." ( $3 $3"/e; s/^(triangleMaterials\s+)(\d+)/$1.($2+1)/e'
+prep solidMeshInverted bar
+perl -pi -e "$invertFirst" constant/solidMesh
+check solidMeshInverted solidMesh "triangle 0" femdemFoam
+
+prep solidMeshDuplicateTriangle bar
+perl -pi -e "$duplicateFirst" constant/solidMesh
+check solidMeshDuplicateTriangle solidMesh "triangles 0 and 1" femdemFoam
+
+prep solidMeshMaterialIndex bar
+sed -i 's/^triangleMaterials \([0-9]*\) { 0 }/triangleMaterials \1 { 1 }/' constant/solidMesh
+check solidMeshMaterialIndex solidMesh "'triangleMaterials'" femdemFoam
+
+prep solidMeshTruncated bar
+f=constant/solidMesh; head -c $(( $(stat -c %s $f) / 2 )) $f > $f.half && mv $f.half $f
+check solidMeshTruncated solidMesh "FOAM FATAL IO ERROR" femdemFoam
+
+prep meshCheckInverted bar
+perl -pi -e "$invertFirst" constant/solidMesh
+check meshCheckInverted solidMesh "triangle 0" femdemMeshCheck
+
+prep meshCheckDuplicateTriangle bar
+perl -pi -e "$duplicateFirst" constant/solidMesh
+check meshCheckDuplicateTriangle solidMesh "triangles 0 and 1" femdemMeshCheck
+
+# --- femdemMesh: system/femdemMeshDict (an existing constant/solidMesh stays)
+prep femdemMeshMissingTargetSize bar
+sed -i '/^targetSize/d' system/femdemMeshDict
+check femdemMeshMissingTargetSize femdemMeshDict "'targetSize'" femdemMesh
+
+prep femdemMeshNegativeTargetSize bar
+setEntry system/femdemMeshDict targetSize -0.01
+check femdemMeshNegativeTargetSize femdemMeshDict "targetSize" femdemMesh
+
+prep femdemMeshMinAngle bar
+setEntry system/femdemMeshDict minAngle 40
+check femdemMeshMinAngle femdemMeshDict "minAngle" femdemMesh
+
+prep femdemMeshUnknownType bar
+sed -i 's/type rectangle/type rectangel/' system/femdemMeshDict
+check femdemMeshUnknownType femdemMeshDict "rectangel" femdemMesh
+
+prep femdemMeshMissingMaterial bar
+sed -i 's/ material rock;//' system/femdemMeshDict
+check femdemMeshMissingMaterial femdemMeshDict "'material'" femdemMesh
+
+# --- gmshToFemdem
+prep gmshMissingFile square
+check gmshMissingFile "squar.msh" "Cannot open" gmshToFemdem squar.msh
+
+prep gmshTruncated square
+head -n 14 square.msh > cut.msh && mv cut.msh square.msh
+check gmshTruncated "square.msh" "EndNodes" gmshToFemdem square.msh
+
+prep gmshQuad square
+sed -i 's/^6$/7/; s/^\$EndElements/7 3 2 2 1 1 2 3 4\n$EndElements/' square.msh
+check gmshQuad "square.msh" "element 7" gmshToFemdem square.msh
+
+# ----------------------------------------------------------------- pending
+# Cases that need a fix in applications/solvers/jwlIbFoam or src/blastFluid
+# (being edited elsewhere); listed, not run:
+for p in \
+    "negativeRhoField: -1 in 0/rho (message does not name the file 0/rho)" \
+    "negativePField: -1 in 0/p (message does not name the file 0/p)" \
+    "maxCoTooLarge: maxCo 3 in controlDict (accepted, the run blows up later)" \
+    "misspeltLimiter: 'limitter' in blastFluidProperties (silently ignored)"
+do
+    echo ">> pending, not run: $p"
+done
+
+echo ">> $nCases cases, $nFailed failed"
+[ $nFailed = 0 ]
