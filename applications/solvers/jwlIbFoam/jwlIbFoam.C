@@ -12,26 +12,80 @@ Group
     grpCompressibleSolvers
 
 Description
-    Explicit shock-capturing solver for detonation products (JWL) and air
-    (or any one or two Mie-Grueneisen materials) in pressure equilibrium,
-    for rock blasting. This is the gas-only path: a case without a solid
-    runs as a pure gas solver; the immersed FEMDEM solid is added by a later
-    development through the alphaSolid/Usolid hooks of blastFluidSolver.
+    Rock blasting: explicit shock-capturing solver for detonation products
+    (JWL) and air (or any one or two Mie-Grueneisen materials in pressure
+    equilibrium) coupled to an immersed, fracturing FEMDEM solid.
 
-    Per time step: Courant-controlled dt (controlDict: adjustTimeStep, maxCo,
-    maxDeltaT), SSP Runge-Kutta stages of the finite-volume residual
-    (HLLC or central-upwind fluxes, limited reconstruction, optional
-    Q-scheme), a log line with time, dt, max p, total mass and energy.
+    Per time step (staggered, see doc/theory-coupling.md):
+      1. project the FEMDEM triangles onto the fluid cells: alpha.solid,
+         U.solid; the gas follows the new fluid fraction;
+      2. Courant-controlled dt (controlDict: adjustTimeStep, maxCo,
+         maxDeltaT); SSP Runge-Kutta stages of the finite-volume residual
+         (HLLC or central-upwind fluxes through the open part of each face,
+         solid surface pressure, optional Q-scheme), then the implicit
+         absorption towards the solid velocity;
+      3. forces on the solid nodes: the momentum the gas gave to the solid
+         (total momentum conserved) and the gas pressure in opened cracks;
+      4. FEMDEM sub-cycled over dt with its own stable step.
+    A case without constant/femdemProperties runs as a pure gas solver.
 
     Inputs: constant/thermophysicalProperties (blastMixture),
     system/blastFluidProperties (numerics, optional), 0/p, 0/U and 0/rho
-    (one material) or 0/alpha.<m1>, 0/rho.<m1>, 0/rho.<m2> (two materials).
+    (one material) or 0/alpha.<m1>, 0/rho.<m1>, 0/rho.<m2> (two
+    materials); with a solid: constant/femdemProperties (as femdemFoam),
+    constant/solidMesh, constant/immersedBodyProperties (optional).
+
+    Output: the gas fields and alpha.solid, U.solid at write times;
+    <time>/uniform/femdemState (the solid, bit-exact; copied by
+    reconstructPar); VTK/femdem.vtu.series with the solid and its cracks;
+    postProcessing/jwlIbFoam/<startTime>/budget.dat: per step the mass,
+    momentum and energy of gas and solid per unit depth, sub-steps, broken
+    joints and fragments. A log line per step; every few seconds of wall
+    time a progress line with the estimated time left.
 
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "blastFluidSolver.H"
+#include "femdemSolid.H"
+#include "femdemOutput.H"
+#include "triangleMesh.H"
+#include "immersedBodyCoupling.H"
+#include "solidVtkWriter.H"
+#include "stopOnSignal.H"
+#include "runProgress.H"
+#include "OFstream.H"
 #include "IOmanip.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- Stop if part of the solid lies outside the fluid mesh
+void checkSolidInsideFluid
+(
+    const fvMesh& mesh,
+    const immersedBodyCoupling& coupling,
+    const femdemSolid& solid
+)
+{
+    const scalar solidArea = sum(solid.area0());
+    const scalar projected =
+        gSum(coupling.alphaSolid().primitiveField()*mesh.V())
+       /coupling.depth();
+    if (mag(projected - solidArea) > 1e-9*solidArea)
+    {
+        FatalErrorInFunction
+            << "constant/solidMesh: "
+            << 100*(solidArea - projected)/solidArea << " % of the solid"
+            << " area lies outside the fluid mesh (fluid mesh bounds "
+            << mesh.bounds() << ")" << exit(FatalError);
+    }
+}
+
+} // End namespace Foam
+
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -39,7 +93,8 @@ int main(int argc, char *argv[])
 {
     argList::addNote
     (
-        "Explicit shock-capturing solver for JWL detonation products and air"
+        "Rock blasting: JWL detonation products and air coupled to an"
+        " immersed, fracturing FEMDEM solid"
     );
 
     #include "postProcess.H"
@@ -49,32 +104,61 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
     #include "createFields.H"
+    #include "createSolid.H"
     #include "createTimeControls.H"
+    #include "createDiagnostics.H"
 
-    const scalar mass0 = fluid.totalMass();
-    const scalar energy0 = fluid.totalEnergy();
-    Info<< "Initial total mass " << setprecision(17) << mass0
-        << " total energy " << energy0 << setprecision(6) << nl << endl;
+    // SIGINT/SIGTERM: write the current step and stop; a progress line
+    // every controlDict/progressInterval seconds of wall time
+    stopOnSignal stop;
+    runProgress progress
+    (
+        runTime,
+        runTime.controlDict().getOrDefault<scalar>("progressInterval", 5)
+    );
 
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
     {
         #include "readTimeControls.H"
+
+        if (hasSolid)
+        {
+            couplingPtr->project(solidPtr->x(), solidPtr->v());
+            fluid.updateFluidFraction();
+        }
+
         #include "setDeltaT.H"
 
         ++runTime;
+        const scalar dt = runTime.deltaTValue();
 
-        fluid.advance(runTime.deltaTValue());
+        fluid.advance(dt);
 
-        Info<< "Time = " << runTime.timeName()
-            << "  dt = " << runTime.deltaTValue()
-            << "  maxP = " << fluid.maxPressure()
-            << "  mass = " << setprecision(17) << fluid.totalMass()
-            << "  energy = " << fluid.totalEnergy() << setprecision(6)
-            << "  minRho = " << gMin(fluid.rho().primitiveField())
-            << "  minP = " << gMin(fluid.p().primitiveField())
-            << endl;
+        label nSubSteps = 0;
+        if (hasSolid)
+        {
+            femdemSolid& solid = solidPtr();
+            couplingPtr->solidForces
+            (
+                solid.x(), solid.topology(), solid.jointBroken(), fluid.p(),
+                fluid.fluidFraction(), fluid.solidImpulse(), dt,
+                solidNodeForces
+            );
+            solid.externalForce() = solidNodeForces;
+            nSubSteps = solid.advance(dt);
+        }
+
+        #include "writeDiagnostics.H"
+
+        progress.report();
+        stop.check(runTime);
+
+        if (hasSolid && runTime.writeTime())
+        {
+            #include "writeSolid.H"
+        }
 
         runTime.write();
     }

@@ -852,21 +852,6 @@ void Foam::blastFluidSolver::addQScheme()
 }
 
 
-void Foam::blastFluidSolver::addSolidForcing(const scalar dt)
-{
-    // Hook for the immersed body (later issue): with alpha_s = alphaSolid
-    // and u_s = Usolid, the implicit absorption
-    //     rhoU <- (rhoU + dt sigma rho u_s)/(1 + dt sigma/rho ...),
-    //     sigma = alpha_s rho/dt
-    // and the fluid fraction (1 - alpha_s) in the mass balance are added
-    // here, on the residuals dRho_, dRhoU_, dRhoE_. Without a solid: no-op.
-    if (!alphaSolidPtr_)
-    {
-        return;
-    }
-}
-
-
 void Foam::blastFluidSolver::assembleResidual()
 {
     dRho_ = 0;
@@ -951,8 +936,15 @@ bool Foam::blastFluidSolver::stage(const scalar a, const scalar dt)
     {
         addQScheme();
     }
+    if (alphaSolidPtr_)
+    {
+        scaleFluxesByFluidFraction();
+    }
     assembleResidual();
-    addSolidForcing(dt);
+    if (alphaSolidPtr_)
+    {
+        addSolidForcing(a, dt);
+    }
 
     const scalar b = 1 - a;
     scalarField& rho = rho_.primitiveFieldRef();
@@ -1085,6 +1077,10 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     anyLowOrder_(false),
     alphaSolidPtr_(nullptr),
     UsolidPtr_(nullptr),
+    minFluidFraction_(0),
+    absorptionBeta_(0),
+    solidWork_(0),
+    createdMass_(0),
     primitivesCurrent_(false)
 {
     readControls();
@@ -1229,23 +1225,6 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::blastFluidSolver::setSolid
-(
-    const volScalarField* alphaSolid,
-    const volVectorField* Usolid
-)
-{
-    alphaSolidPtr_ = alphaSolid;
-    UsolidPtr_ = Usolid;
-    if (alphaSolidPtr_ && gMax(alphaSolidPtr_->primitiveField()) > 0)
-    {
-        WarningInFunction
-            << "alphaSolid > 0 found, but the immersed-body forcing is not"
-            << " implemented yet: the solid is ignored." << endl;
-    }
-}
-
-
 Foam::scalar Foam::blastFluidSolver::maxDeltaT(const scalar maxCo) const
 {
     const vectorField& U = U_.primitiveField();
@@ -1281,6 +1260,10 @@ void Foam::blastFluidSolver::advance(const scalar dt)
     const label maxAttempts = 4;
     for (label attempt = 0; attempt < maxAttempts; ++attempt)
     {
+        if (alphaSolidPtr_)
+        {
+            solidImpulse_ = Zero;
+        }
         bool ok = true;
         for (label s = 0; s < RKorder_ && ok; ++s)
         {
@@ -1294,6 +1277,10 @@ void Foam::blastFluidSolver::advance(const scalar dt)
                     << " needed first-order reconstruction in "
                     << returnReduce(label(sum(lowOrder_.primitiveField())), sumOp<label>())
                     << " cells" << endl;
+            }
+            if (alphaSolidPtr_)
+            {
+                absorbSolidVelocity(dt);
             }
             return;
         }
@@ -1336,19 +1323,63 @@ void Foam::blastFluidSolver::advance(const scalar dt)
 
 Foam::scalar Foam::blastFluidSolver::totalMass() const
 {
-    return gSum(rho_.primitiveField()*mesh_.V());
+    return gSum(rho_.primitiveField()*mesh_.V()*fluidFraction());
 }
 
 
 Foam::scalar Foam::blastFluidSolver::totalEnergy() const
 {
-    return gSum(rhoE_.primitiveField()*mesh_.V());
+    return gSum(rhoE_.primitiveField()*mesh_.V()*fluidFraction());
+}
+
+
+Foam::vector Foam::blastFluidSolver::totalMomentum() const
+{
+    return gSum(rhoU_.primitiveField()*(mesh_.V()*fluidFraction()));
 }
 
 
 Foam::scalar Foam::blastFluidSolver::maxPressure() const
 {
-    return gMax(p_.primitiveField());
+    if (!fluidFractionPtr_.valid())
+    {
+        return gMax(p_.primitiveField());
+    }
+    // Cells covered by the solid keep a frozen state: not gas
+    const scalarField& phi = fluidFractionPtr_->primitiveField();
+    const scalarField& p = p_.primitiveField();
+    scalar pMax = -GREAT;
+    forAll(p, i)
+    {
+        if (phi[i] > 0) pMax = max(pMax, p[i]);
+    }
+    return returnReduce(pMax, maxOp<scalar>());
+}
+
+
+Foam::scalar Foam::blastFluidSolver::minPressure() const
+{
+    const tmp<scalarField> phi = fluidFraction();
+    const scalarField& p = p_.primitiveField();
+    scalar pMin = GREAT;
+    forAll(p, i)
+    {
+        if (phi()[i] > 0) pMin = min(pMin, p[i]);
+    }
+    return returnReduce(pMin, minOp<scalar>());
+}
+
+
+Foam::scalar Foam::blastFluidSolver::minDensity() const
+{
+    const tmp<scalarField> phi = fluidFraction();
+    const scalarField& rho = rho_.primitiveField();
+    scalar rhoMin = GREAT;
+    forAll(rho, i)
+    {
+        if (phi()[i] > 0) rhoMin = min(rhoMin, rho[i]);
+    }
+    return returnReduce(rhoMin, minOp<scalar>());
 }
 
 

@@ -328,6 +328,8 @@ Foam::femdemSolid::femdemSolid
     markFreeEdges();
     setBoundaryConditions(dict);
     computeStableTimeStep();
+    // Optional uniform initial velocity (a restart state overrides it)
+    v_ = dict.getOrDefault<vector2D>("initialVelocity", vector2D::zero);
     if (trackEnergy_)
     {
         const label n = x_.size();

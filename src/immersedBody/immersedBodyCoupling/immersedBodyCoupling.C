@@ -19,9 +19,11 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
 )
 :
     mesh_(mesh),
+    dict_(dict),
     projection_(mesh),
-    depth_(mesh.bounds().span().z()),
+    depth_(returnReduce(mesh.bounds().span().z(), maxOp<scalar>())),
     beta_(dict.getOrDefault<scalar>("beta", 1)),
+    minFluidFraction_(dict.getOrDefault<scalar>("minFluidFraction", 0.02)),
     crackPressure_(dict.getOrDefault<bool>("crackPressure", true)),
     alphaSolid_
     (
@@ -30,7 +32,7 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
             "alpha.solid",
             mesh.time().timeName(),
             mesh,
-            IOobject::NO_READ,
+            IOobject::READ_IF_PRESENT,
             IOobject::AUTO_WRITE
         ),
         mesh,
@@ -52,12 +54,26 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
         zeroGradientFvPatchVectorField::typeName
     ),
     cellForce_(mesh.nCells(), Zero),
-    triangles_(nTriangles)
+    triangles_(nTriangles),
+    alphaSolidRead_(alphaSolid_.headerOk())
 {
-    if (beta_ <= 0)
+    if (!(beta_ > 0))
     {
         FatalIOErrorInFunction(dict)
-            << "beta must be positive, not " << beta_ << exit(FatalIOError);
+            << "entry 'beta' must be positive, not " << beta_
+            << exit(FatalIOError);
+    }
+    if (!(minFluidFraction_ > 0 && minFluidFraction_ < 0.5))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'minFluidFraction' must lie in (0, 0.5), not "
+            << minFluidFraction_ << exit(FatalIOError);
+    }
+    if (!(depth_ > 0))
+    {
+        FatalErrorInFunction
+            << "The fluid mesh has no depth: the immersed solid needs a 2D"
+            << " mesh one cell thick in z" << exit(FatalError);
     }
     forAll(triangles_, t)
     {
@@ -90,52 +106,27 @@ void Foam::immersedBodyCoupling::project
 }
 
 
-void Foam::immersedBodyCoupling::absorb
-(
-    const volScalarField& rho,
-    volVectorField& rhoU,
-    volScalarField& rhoE,
-    const scalar dt
-)
-{
-    const scalarField& alpha = alphaSolid_;
-    const vectorField& Us = Usolid_;
-    const scalarField& V = mesh_.V();
-
-    forAll(alpha, celli)
-    {
-        cellForce_[celli] = Zero;
-        if (alpha[celli] <= 0 || rho[celli] <= 0)
-        {
-            continue;
-        }
-        // Implicit: rho (u1 - u0)/dt = sigma (u_s - u1), sigma dt/rho = beta alpha
-        const scalar k = beta_*alpha[celli];
-        const vector u0 = rhoU[celli]/rho[celli];
-        const vector u1 = (u0 + k*Us[celli])/(1 + k);
-        const vector dMomentum = rho[celli]*(u1 - u0);
-
-        rhoU[celli] += dMomentum;
-        // The gas does work dMomentum . u_s on the solid; the rest of its
-        // kinetic energy change is dissipated into heat: total energy kept
-        rhoE[celli] += dMomentum & Us[celli];
-
-        // Reaction on the solid, per unit time and unit depth
-        const vector f = -dMomentum*V[celli]/(dt*depth_);
-        cellForce_[celli] = vector2D(f.x(), f.y());
-    }
-}
-
-
 void Foam::immersedBodyCoupling::solidForces
 (
     const UList<vector2D>& nodePositions,
     const jointTopology& topology,
     const UList<bool>& jointBroken,
     const volScalarField& p,
+    const scalarField& fluidFraction,
+    const vectorField& solidImpulse,
+    const scalar dt,
     List<vector2D>& nodeForces
-) const
+)
 {
+    // Momentum per unit time and unit depth
+    const scalar scale = 1/(dt*depth_);
+    forAll(cellForce_, celli)
+    {
+        cellForce_[celli] = vector2D
+        (
+            scale*solidImpulse[celli].x(), scale*solidImpulse[celli].y()
+        );
+    }
     nodeForces.setSize(nodePositions.size());
     nodeForces = Zero;
     projection_.distributeToPoints
@@ -143,10 +134,35 @@ void Foam::immersedBodyCoupling::solidForces
         cellForce_, alphaWork_, nodePositions, triangles_, nodeForces
     );
 
-    if (!crackPressure_)
+    if (crackPressure_)
     {
-        return;
+        addCrackPressure
+        (
+            nodePositions, topology, jointBroken, p, fluidFraction,
+            nodeForces
+        );
     }
+
+    if (Pstream::parRun())
+    {
+        // The same solid on every processor: sum the parts
+        Pstream::listCombineGather(nodeForces, plusEqOp<vector2D>());
+        Pstream::listCombineScatter(nodeForces);
+    }
+}
+
+
+void Foam::immersedBodyCoupling::addCrackPressure
+(
+    const UList<vector2D>& nodePositions,
+    const jointTopology& topology,
+    const UList<bool>& jointBroken,
+    const volScalarField& p,
+    const scalarField& fluidFraction,
+    List<vector2D>& nodeForces
+) const
+{
+    const scalar zMid = mesh_.bounds().centre().z();
     const List<jointNodeList>& jointNodes = topology.jointNodes();
     forAll(jointNodes, j)
     {
@@ -158,7 +174,8 @@ void Foam::immersedBodyCoupling::solidForces
         const vector2D& p0 = nodePositions[n[0]];
         const vector2D& p1 = nodePositions[n[1]];
         const vector2D mid = 0.5*(p0 + p1);
-        const vector2D gapMid = 0.5*(nodePositions[n[2]] + nodePositions[n[3]]) - mid;
+        const vector2D gapMid =
+            0.5*(nodePositions[n[2]] + nodePositions[n[3]]) - mid;
         const vector2D d = p1 - p0;
         // Unit normal from A into B times the face length
         const vector2D nL(d.y(), -d.x());
@@ -166,10 +183,10 @@ void Foam::immersedBodyCoupling::solidForces
         {
             continue;   // closed crack: no gas between the faces
         }
-        const label celli = mesh_.findCell(point(mid.x(), mid.y(), mesh_.bounds().centre().z()));
-        if (celli < 0)
+        const label celli = mesh_.findCell(point(mid.x(), mid.y(), zMid));
+        if (celli < 0 || fluidFraction[celli] <= 0)
         {
-            continue;
+            continue;   // elsewhere, or no gas in the cell
         }
         // Gas pushes A along -n and B along +n: an internal pair
         const vector2D f = 0.5*p[celli]*nL;
@@ -178,17 +195,6 @@ void Foam::immersedBodyCoupling::solidForces
         nodeForces[n[2]] += f;
         nodeForces[n[3]] += f;
     }
-}
-
-
-Foam::vector2D Foam::immersedBodyCoupling::totalAbsorptionForce() const
-{
-    vector2D sum(Zero);
-    for (const vector2D& f : cellForce_)
-    {
-        sum += f;
-    }
-    return sum;
 }
 
 

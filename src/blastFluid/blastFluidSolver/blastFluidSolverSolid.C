@@ -1,0 +1,640 @@
+/*---------------------------------------------------------------------------*\
+  jwlIbFoam: blast in fractured solids, built on OpenFOAM v1912
+-------------------------------------------------------------------------------
+License
+    GNU General Public License v3 or later (as OpenFOAM).
+
+Description
+    The immersed solid in blastFluidSolver: fluid fraction, face apertures,
+    solid surface pressure, absorption and the redistribution of the gas when
+    the solid moves (see the class description and doc/theory-coupling.md).
+
+\*---------------------------------------------------------------------------*/
+
+#include "blastFluidSolver.H"
+#include "calculatedFvPatchFields.H"
+
+// * * * * * * * * * * * * * * * Gas content  * * * * * * * * * * * * * * * //
+
+//- Gas volume, mass, momentum, energy (and, with two materials, the mass
+//  and the volume of material 1) held by each cell
+class Foam::blastFluidSolver::gasContent
+{
+    blastFluidSolver& solver_;
+
+public:
+
+    scalarField volume, mass, energy, mass1, volume1;
+    vectorField momentum;
+
+    //- From the intrinsic states and the gas volume fractions they refer to
+    gasContent(blastFluidSolver& solver, const scalarField& phi)
+    :
+        solver_(solver),
+        volume(phi*solver.mesh_.V()),
+        mass(solver.rho_.primitiveField()*volume),
+        energy(solver.rhoE_.primitiveField()*volume),
+        momentum(solver.rhoU_.primitiveField()*volume)
+    {
+        if (solver.twoPhase_)
+        {
+            mass1 = solver.alphaRho1Ptr_->primitiveField()*volume;
+            volume1 = solver.alpha1Ptr_->primitiveField()*volume;
+        }
+    }
+
+    //- Add v times the gas state (per unit gas volume) given by the
+    //  intrinsic values rho, rhoU, rhoE (rho1: partial density, alpha1)
+    void add
+    (
+        const label i, const scalar v, const scalar rho, const vector& rhoU,
+        const scalar rhoE, const scalar rho1, const scalar alpha1
+    )
+    {
+        volume[i] += v;
+        mass[i] += v*rho;
+        momentum[i] += v*rhoU;
+        energy[i] += v*rhoE;
+        if (solver_.twoPhase_)
+        {
+            mass1[i] += v*rho1;
+            volume1[i] += v*alpha1;
+        }
+    }
+
+    //- Keep the fraction s of cell i's content
+    void scale(const label i, const scalar s)
+    {
+        volume[i] *= s; mass[i] *= s; momentum[i] *= s; energy[i] *= s;
+        if (solver_.twoPhase_)
+        {
+            mass1[i] *= s; volume1[i] *= s;
+        }
+    }
+
+    //- Intrinsic states of the cells with gas (fluid fraction phi); solid
+    //  cells keep their frozen state
+    void toState(const scalarField& phi) const
+    {
+        const scalarField& V = solver_.mesh_.V();
+        scalarField& rho = solver_.rho_.primitiveFieldRef();
+        vectorField& rhoU = solver_.rhoU_.primitiveFieldRef();
+        scalarField& rhoE = solver_.rhoE_.primitiveFieldRef();
+        forAll(phi, i)
+        {
+            if (phi[i] <= 0) continue;
+            const scalar rV = 1/(phi[i]*V[i]);
+            rho[i] = mass[i]*rV;
+            rhoU[i] = momentum[i]*rV;
+            rhoE[i] = energy[i]*rV;
+            if (solver_.twoPhase_)
+            {
+                solver_.alphaRho1Ptr_->primitiveFieldRef()[i] = mass1[i]*rV;
+                solver_.alpha1Ptr_->primitiveFieldRef()[i] =
+                    volume[i] > 0 ? volume1[i]/volume[i] : 0;
+            }
+        }
+    }
+};
+
+
+template<class Type>
+void Foam::blastFluidSolver::coupledNeighbourValues
+(
+    const GeometricField<Type, fvPatchField, volMesh>& field,
+    Field<Type>& values
+) const
+{
+    values.setSize(nFaces_ - nInternal_);
+    values = Zero;
+    forAll(patchKind_, patchi)
+    {
+        if (patchKind_[patchi] != COUPLED) continue;
+        const tmp<Field<Type>> tnbr =
+            field.boundaryField()[patchi].patchNeighbourField();
+        const Field<Type>& nbr = tnbr();
+        forAll(nbr, j)
+        {
+            values[patchStart_[patchi] - nInternal_ + j] = nbr[j];
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::blastFluidSolver::setFaceFluidFraction()
+{
+    volScalarField& phiVol = fluidFractionPtr_();
+    phiVol.correctBoundaryConditions();
+    const scalarField& phi = phiVol.primitiveField();
+
+    faceFluidFraction_.setSize(nFaces_);
+    for (label f = 0; f < nInternal_; ++f)
+    {
+        faceFluidFraction_[f] = min(phi[own_[f]], phi[nei_[f]]);
+    }
+    forAll(patchKind_, patchi)
+    {
+        if (patchKind_[patchi] == SKIP) continue;
+        const label start = patchStart_[patchi];
+        const label size = mesh_.boundary()[patchi].size();
+        if (patchKind_[patchi] == COUPLED)
+        {
+            const tmp<scalarField> tnbr =
+                phiVol.boundaryField()[patchi].patchNeighbourField();
+            const scalarField& nbr = tnbr();
+            for (label j = 0; j < size; ++j)
+            {
+                faceFluidFraction_[start + j] =
+                    min(phi[own_[start + j]], nbr[j]);
+            }
+        }
+        else
+        {
+            for (label j = 0; j < size; ++j)
+            {
+                faceFluidFraction_[start + j] = phi[own_[start + j]];
+            }
+        }
+    }
+
+    // Wall faces: the closed part of a face, seen from its more open side
+    DynamicList<label> gasCell(nFaces_/10 + 1), solidCell(nFaces_/10 + 1);
+    DynamicList<label> wallFace(nFaces_/10 + 1);
+    DynamicList<vector> area(nFaces_/10 + 1);
+    for (label f = 0; f < nInternal_; ++f)
+    {
+        const label P = own_[f], N = nei_[f];
+        if (phi[P] > phi[N])
+        {
+            gasCell.append(P); solidCell.append(N); wallFace.append(f);
+            area.append((phi[P] - phi[N])*Sf_[f]);
+        }
+        else if (phi[N] > phi[P])
+        {
+            gasCell.append(N); solidCell.append(P); wallFace.append(f);
+            area.append((phi[P] - phi[N])*Sf_[f]);
+        }
+    }
+    forAll(patchKind_, patchi)
+    {
+        if (patchKind_[patchi] != COUPLED) continue;
+        const tmp<scalarField> tnbr =
+            phiVol.boundaryField()[patchi].patchNeighbourField();
+        const scalarField& nbr = tnbr();
+        const label start = patchStart_[patchi];
+        forAll(nbr, j)
+        {
+            const label cf = start + j, P = own_[cf];
+            if (phi[P] > nbr[j])
+            {
+                gasCell.append(P); solidCell.append(-1); wallFace.append(cf);
+                area.append((phi[P] - nbr[j])*Sf_[cf]);
+            }
+            else if (nbr[j] > phi[P])
+            {
+                // Same area vector as computed on the gas side's processor
+                gasCell.append(-1); solidCell.append(P); wallFace.append(cf);
+                area.append((phi[P] - nbr[j])*Sf_[cf]);
+            }
+        }
+    }
+    wallGasCell_.transfer(gasCell);
+    wallSolidCell_.transfer(solidCell);
+    wallFace_.transfer(wallFace);
+    wallArea_.transfer(area);
+}
+
+
+void Foam::blastFluidSolver::scaleFluxesByFluidFraction()
+{
+    const scalarField& phif = faceFluidFraction_;
+    for (label f = 0; f < nFaces_; ++f)
+    {
+        F_.rho[f] *= phif[f];
+        F_.rhoU[f] *= phif[f];
+        F_.rhoE[f] *= phif[f];
+    }
+    if (twoPhase_)
+    {
+        for (label f = 0; f < nFaces_; ++f)
+        {
+            F_.rhoY1[f] *= phif[f];
+            F_.alpha[f] *= phif[f];
+            F_.uS[f] *= phif[f];
+        }
+    }
+}
+
+
+void Foam::blastFluidSolver::addSolidForcing(const scalar a, const scalar dt)
+{
+    const scalarField& phi = fluidFractionPtr_->primitiveField();
+    const scalarField& p = p_.primitiveField();
+    const scalarField& V = mesh_.V();
+    const scalar b = 1 - a;
+
+    // Pressure of the gas side on faces shared with other processors
+    scalarField pNbr;
+    coupledNeighbourValues(p_, pNbr);
+
+    // The stage's impulse enters the Runge-Kutta combination like the
+    // state does, I <- (1 - a)(I + dt S): I is exactly the step's exchange
+    solidImpulse_ *= b;
+
+    forAll(wallFace_, w)
+    {
+        const label g = wallGasCell_[w], s = wallSolidCell_[w];
+        const scalar pGas = g >= 0 ? p[g] : pNbr[wallFace_[w] - nInternal_];
+        const vector force = -pGas*wallArea_[w];
+        if (g >= 0)
+        {
+            dRhoU_[g] += force/V[g];
+        }
+        if (s >= 0)
+        {
+            solidImpulse_[s] -= b*dt*force;
+        }
+    }
+
+    // Residual per unit volume of gas; solid cells do not change
+    forAll(phi, i)
+    {
+        const scalar rPhi = phi[i] > 0 ? 1/phi[i] : 0;
+        dRho_[i] *= rPhi;
+        dRhoU_[i] *= rPhi;
+        dRhoE_[i] *= rPhi;
+    }
+    if (twoPhase_)
+    {
+        forAll(phi, i)
+        {
+            const scalar rPhi = phi[i] > 0 ? 1/phi[i] : 0;
+            dAlpha_[i] *= rPhi;
+            dAlphaRho1_[i] *= rPhi;
+        }
+    }
+}
+
+
+void Foam::blastFluidSolver::absorbSolidVelocity(const scalar dt)
+{
+    const scalarField& alphaS = alphaSolidPtr_->primitiveField();
+    const scalarField& phi = fluidFractionPtr_->primitiveField();
+    const vectorField& Us = UsolidPtr_->primitiveField();
+    const scalarField& rho = rho_.primitiveField();
+    vectorField& rhoU = rhoU_.primitiveFieldRef();
+    scalarField& rhoE = rhoE_.primitiveFieldRef();
+    const scalarField& V = mesh_.V();
+
+    scalar work = 0;
+    forAll(phi, i)
+    {
+        if (phi[i] <= 0 || alphaS[i] <= 0)
+        {
+            continue;
+        }
+        // rho (u1 - u0)/dt = sigma (u_s - u1), sigma dt/rho = beta alpha_s
+        const scalar k = absorptionBeta_*alphaS[i];
+        const vector u0 = rhoU[i]/rho[i];
+        const vector u1 = (u0 + k*Us[i])/(1 + k);
+        const vector dRhoU = rho[i]*(u1 - u0);
+        rhoU[i] += dRhoU;
+        // The solid does work dRhoU . u_s on the gas; the rest of the
+        // relative kinetic energy is dissipated into heat in the gas
+        const scalar dRhoE = dRhoU & Us[i];
+        rhoE[i] += dRhoE;
+        solidImpulse_[i] -= phi[i]*V[i]*dRhoU;
+        work += phi[i]*V[i]*dRhoE;
+    }
+    solidWork_ += returnReduce(work, sumOp<scalar>());
+    primitivesCurrent_ = false;
+    primitivesFromConservative(true);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::blastFluidSolver::setSolid
+(
+    const volScalarField& alphaSolid,
+    const volVectorField& Usolid,
+    const scalar minFluidFraction,
+    const scalar absorptionBeta
+)
+{
+    alphaSolidPtr_ = &alphaSolid;
+    UsolidPtr_ = &Usolid;
+    minFluidFraction_ = minFluidFraction;
+    absorptionBeta_ = absorptionBeta;
+
+    // The fluid fraction is part of the state (a pocket of gas squeezed
+    // by the solid keeps minFluidFraction): written at write times and read
+    // back on restart; from alpha_s on a fresh start
+    IOobject io
+    (
+        "fluidFraction",
+        mesh_.time().timeName(),
+        mesh_,
+        IOobject::READ_IF_PRESENT,
+        IOobject::AUTO_WRITE
+    );
+    if (io.typeHeaderOk<volScalarField>(true))
+    {
+        fluidFractionPtr_.reset(new volScalarField(io, mesh_));
+        const scalarField& phi = fluidFractionPtr_->primitiveField();
+        forAll(phi, i)
+        {
+            if (!(phi[i] >= 0 && phi[i] <= 1))
+            {
+                FatalIOError
+                (
+                    FUNCTION_NAME, __FILE__, __LINE__,
+                    fluidFractionPtr_->objectPath(), 0, 0
+                )
+                    << "entry 'internalField': fluid fraction " << phi[i]
+                    << " in cell " << i << " is outside [0, 1]"
+                    << exit(FatalIOError);
+            }
+        }
+    }
+    else
+    {
+        fluidFractionPtr_.reset
+        (
+            new volScalarField
+            (
+                io,
+                mesh_,
+                dimensionedScalar("one", dimless, 1),
+                calculatedFvPatchScalarField::typeName
+            )
+        );
+        scalarField& phi = fluidFractionPtr_->primitiveFieldRef();
+        const scalarField& alphaS = alphaSolid.primitiveField();
+        forAll(phi, i)
+        {
+            const scalar f = 1 - alphaS[i];
+            phi[i] = f >= minFluidFraction_ ? f : 0;
+        }
+    }
+    setFaceFluidFraction();
+    solidImpulse_.setSize(mesh_.nCells(), Zero);
+    primitivesCurrent_ = false;
+}
+
+
+void Foam::blastFluidSolver::updateFluidFraction()
+{
+    // When the solid moves, a cell that loses gas volume pushes the gas of
+    // that volume, with the work p dV, through its open faces into its
+    // neighbours; a cell that gains gas volume draws it through its open
+    // faces from the neighbours that hold gas, which do the work p dV on
+    // the solid. Every transfer is a face quantity computed from the states
+    // before the move, identical on both sides of a processor face: mass,
+    // momentum and energy are conserved and a decomposed run gives the
+    // serial answer.
+    volScalarField& phiField = fluidFractionPtr_();
+    scalarField& phi = phiField.primitiveFieldRef();
+    const scalarField& alphaS = alphaSolidPtr_->primitiveField();
+    const scalarField& V = mesh_.V();
+    const scalarField& p = p_.primitiveField();
+    const label nCells = mesh_.nCells();
+
+    const volScalarField phiOldField("fluidFractionOld", phiField);
+    const scalarField& phiOld = phiOldField.primitiveField();
+    const scalarField vOld(phiOld*V);
+
+    forAll(phi, i)
+    {
+        const scalar f = 1 - alphaS[i];
+        phi[i] = f >= minFluidFraction_ ? f : 0;
+    }
+    phiField.correctBoundaryConditions();
+    scalarField phiNbr, phiOldNbr;
+    coupledNeighbourValues(phiField, phiNbr);
+    coupledNeighbourValues(phiOldField, phiOldNbr);
+
+    boolList coupledFace(nFaces_ - nInternal_, false);
+    forAll(patchKind_, patchi)
+    {
+        if (patchKind_[patchi] != COUPLED) continue;
+        const label size = mesh_.boundary()[patchi].size();
+        for (label j = 0; j < size; ++j)
+        {
+            coupledFace[patchStart_[patchi] - nInternal_ + j] = true;
+        }
+    }
+
+    // A closing cell pushes its gas out through the faces it had open to
+    // neighbours that stay open (so that a cell that closes completely
+    // empties); an opening cell draws through the faces open after the
+    // move from neighbours that held gas and keep some
+    auto outArea = [](const scalar phiOldA, const scalar phiA, const scalar phiB)
+    {
+        return min(max(phiOldA, phiA), phiB);
+    };
+    auto donates = [](const scalar phiOldA, const scalar phiA)
+    {
+        return phiOldA > 0 && phiA > 0;
+    };
+    scalarField openArea(nFaces_, 0), outOwn(nFaces_, 0), outNei(nFaces_, 0);
+    scalarField sumOpen(nCells, 0), sumDonor(nCells, 0);
+    for (label f = 0; f < nInternal_; ++f)
+    {
+        const label P = own_[f], N = nei_[f];
+        openArea[f] = min(phi[P], phi[N])*magSf_[f];
+        outOwn[f] = outArea(phiOld[P], phi[P], phi[N])*magSf_[f];
+        outNei[f] = outArea(phiOld[N], phi[N], phi[P])*magSf_[f];
+        sumOpen[P] += outOwn[f];
+        sumOpen[N] += outNei[f];
+        if (donates(phiOld[N], phi[N])) sumDonor[P] += openArea[f];
+        if (donates(phiOld[P], phi[P])) sumDonor[N] += openArea[f];
+    }
+    for (label cf = nInternal_; cf < nFaces_; ++cf)
+    {
+        const label b = cf - nInternal_;
+        if (!coupledFace[b]) continue;
+        const label P = own_[cf];
+        openArea[cf] = min(phi[P], phiNbr[b])*magSf_[cf];
+        outOwn[cf] = outArea(phiOld[P], phi[P], phiNbr[b])*magSf_[cf];
+        outNei[cf] = outArea(phiOldNbr[b], phiNbr[b], phi[P])*magSf_[cf];
+        sumOpen[P] += outOwn[cf];
+        if (donates(phiOldNbr[b], phiNbr[b])) sumDonor[P] += openArea[cf];
+    }
+
+    // Per cell: the volume pushed out and the volume drawn in per unit
+    // area of the faces concerned. Pushed-out gas arrives with the work
+    // p dV of the solid on it (energy rhoE + p per unit volume); a donor
+    // gives its state and pays the work p dV done on the solid (at most
+    // half of its internal energy), so that the receiver starts at the
+    // donor's pressure.
+    auto newField = [&](const word& name)
+    {
+        return volScalarField(name, phiField*0);
+    };
+    volScalarField outVolume(newField("outVolume"));
+    volScalarField inVolume(newField("inVolume"));
+    volScalarField pushedRhoE(newField("pushedRhoE"));
+    scalarField& out = outVolume.primitiveFieldRef();
+    scalarField& in = inVolume.primitiveFieldRef();
+    scalarField& pushedE = pushedRhoE.primitiveFieldRef();
+    scalarField drawWork(nCells, 0);
+    scalar created = 0;
+    forAll(phi, i)
+    {
+        const scalar dV = phi[i]*V[i] - vOld[i];
+        if (dV < 0 && sumOpen[i] > 0)
+        {
+            out[i] = -dV/sumOpen[i];
+        }
+        else if (dV < 0 && phi[i] < minFluidFraction_)
+        {
+            // Nowhere to go (a closed pocket): stays minimally open
+            phi[i] = minFluidFraction_;
+        }
+        else if (dV > 0 && sumDonor[i] > 0)
+        {
+            in[i] = dV/sumDonor[i];
+        }
+        const scalar rhoe = rhoE_[i] - 0.5*magSqr(rhoU_[i])/rho_[i];
+        pushedE[i] = rhoE_[i] + p[i];
+        drawWork[i] = min(p[i], 0.5*rhoe);
+    }
+    outVolume.correctBoundaryConditions();
+    inVolume.correctBoundaryConditions();
+    pushedRhoE.correctBoundaryConditions();
+    rho_.correctBoundaryConditions();
+    rhoU_.correctBoundaryConditions();
+    rhoE_.correctBoundaryConditions();
+    if (twoPhase_)
+    {
+        alphaRho1Ptr_->correctBoundaryConditions();
+        alpha1Ptr_->correctBoundaryConditions();
+    }
+
+    scalarField outNbr, inNbr, pushedENbr, rhoNbr, rhoENbr, rho1Nbr, alpha1Nbr;
+    vectorField rhoUNbr;
+    coupledNeighbourValues(outVolume, outNbr);
+    coupledNeighbourValues(inVolume, inNbr);
+    coupledNeighbourValues(pushedRhoE, pushedENbr);
+    coupledNeighbourValues(rho_, rhoNbr);
+    coupledNeighbourValues(rhoU_, rhoUNbr);
+    coupledNeighbourValues(rhoE_, rhoENbr);
+    if (twoPhase_)
+    {
+        coupledNeighbourValues(alphaRho1Ptr_(), rho1Nbr);
+        coupledNeighbourValues(alpha1Ptr_(), alpha1Nbr);
+    }
+    const scalarField& rho1 =
+        twoPhase_ ? alphaRho1Ptr_->primitiveField() : rho_.primitiveField();
+    const scalarField& alpha1 =
+        twoPhase_ ? alpha1Ptr_->primitiveField() : rho_.primitiveField();
+    if (!twoPhase_)
+    {
+        rho1Nbr = rhoNbr;
+        alpha1Nbr = rhoNbr;
+    }
+
+    gasContent c(*this, vOld/V);
+    const scalarField rhoOld(rho_.primitiveField());
+    const vectorField rhoUOld(rhoU_.primitiveField());
+
+    // Cell a gives gas volume v of its state, losing the energy rhoE_a + w
+    auto give = [&](const label a, const scalar v, const scalar w)
+    {
+        c.add(a, -v, rhoOld[a], rhoUOld[a], rhoE_[a] + w, rho1[a], alpha1[a]);
+    };
+    // Cell a pushes volume v into b; cell b draws volume v from a
+    auto push = [&](const label a, const label b, const scalar v)
+    {
+        c.add(b, v, rhoOld[a], rhoUOld[a], pushedE[a], rho1[a], alpha1[a]);
+        give(a, v, 0);
+    };
+    auto draw = [&](const label a, const label b, const scalar v)
+    {
+        c.add(b, v, rhoOld[a], rhoUOld[a], rhoE_[a], rho1[a], alpha1[a]);
+        give(a, v, drawWork[a]);
+    };
+    for (label f = 0; f < nInternal_; ++f)
+    {
+        const label P = own_[f], N = nei_[f];
+        const scalar A = openArea[f];
+        if (out[P] > 0 && outOwn[f] > 0) push(P, N, out[P]*outOwn[f]);
+        if (out[N] > 0 && outNei[f] > 0) push(N, P, out[N]*outNei[f]);
+        if (A <= 0) continue;
+        if (in[P] > 0 && donates(phiOld[N], phi[N])) draw(N, P, in[P]*A);
+        if (in[N] > 0 && donates(phiOld[P], phi[P])) draw(P, N, in[N]*A);
+    }
+    for (label cf = nInternal_; cf < nFaces_; ++cf)
+    {
+        // The other side of a processor face adds the same amounts
+        const label b = cf - nInternal_, P = own_[cf];
+        if (!coupledFace[b]) continue;
+        const scalar A = openArea[cf];
+        const scalar vPushOut = out[P]*outOwn[cf];
+        const scalar vPushIn = outNbr[b]*outNei[cf];
+        const scalar vDrawOut =
+            donates(phiOld[P], phi[P]) ? inNbr[b]*A : 0;
+        const scalar vDrawIn =
+            donates(phiOldNbr[b], phiNbr[b]) ? in[P]*A : 0;
+        if (vPushOut > 0) give(P, vPushOut, 0);
+        if (vDrawOut > 0) give(P, vDrawOut, drawWork[P]);
+        if (vPushIn > 0)
+        {
+            c.add
+            (
+                P, vPushIn, rhoNbr[b], rhoUNbr[b], pushedENbr[b], rho1Nbr[b],
+                alpha1Nbr[b]
+            );
+        }
+        if (vDrawIn > 0)
+        {
+            c.add
+            (
+                P, vDrawIn, rhoNbr[b], rhoUNbr[b], rhoENbr[b], rho1Nbr[b],
+                alpha1Nbr[b]
+            );
+        }
+    }
+
+    // Cells opened without a neighbour holding gas: filled with their
+    // frozen state (reported as created mass; normally none)
+    forAll(phi, i)
+    {
+        if (vOld[i] == 0 && phi[i] > 0 && c.volume[i] <= 0)
+        {
+            const scalar v = phi[i]*V[i];
+            c.scale(i, 0);
+            c.add
+            (
+                i, v, rhoOld[i], rhoUOld[i], rhoE_[i], rho1[i], alpha1[i]
+            );
+            created += v*rhoOld[i];
+        }
+    }
+
+    // Energy given to the gas by the moving solid
+    solidWork_ = returnReduce(sum(c.energy) - sum(rhoE_.primitiveField()*vOld), sumOp<scalar>());
+    createdMass_ += returnReduce(created, sumOp<scalar>());
+    c.toState(phi);
+
+    phiField.correctBoundaryConditions();
+    setFaceFluidFraction();
+    primitivesCurrent_ = false;
+    primitivesFromConservative(true);
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::blastFluidSolver::fluidFraction() const
+{
+    if (fluidFractionPtr_.valid())
+    {
+        return fluidFractionPtr_->primitiveField();
+    }
+    return tmp<scalarField>::New(mesh_.nCells(), 1);
+}
+
+
+// ************************************************************************* //
