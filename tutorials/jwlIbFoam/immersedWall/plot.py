@@ -5,8 +5,10 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                                "..", "common"))
+sys.path.insert(0, os.path.join(os.environ.get(
+    "JWLIBFOAM_TUTORIALS",
+    os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")),
+    "jwlIbFoam", "common"))
 import blastPost as bp  # noqa: E402
 
 import matplotlib  # noqa: E402
