@@ -3,8 +3,13 @@
 #  1. misspelt entry in constant/thermophysicalProperties -> FatalIOError
 #     naming the file and the entry
 #  2. omega <= 0 for JWL -> rejected
-#  3. unstable run (maxCo 3) -> stops naming time and cell, exit != 0, and
-#     writes no time directory for the failed step
+#  3. maxCo 3 (above the stable limit 1 of the explicit schemes) ->
+#     FatalIOError naming controlDict and 'maxCo', nothing written
+#  4. unstable run (adjustTimeStep no, deltaT 0.0026 = Courant number 1.4 on
+#     the 400-cell tube) -> stops at the third step naming time, cell and
+#     centre, exit != 0, writes no time directory for the failed step, and
+#     the last written time (0.0052) is readable: a restart from it with
+#     a stable step runs to the end
 cd "$JWLIBFOAM_TEST_DIR" || exit 1
 cp -r "$JWLIBFOAM_TUTORIALS/jwlIbFoam/sodShockTube" base
 cd base
@@ -37,17 +42,45 @@ else
     echo ">> omega <= 0: no clear message  <-- FAIL"; fail=1
 fi
 
-sed -i 's/^maxCo .*/maxCo           3;/; s/^writeInterval .*/writeInterval   0.01;/' system/controlDict
-if jwlIbFoam > log.unstable 2>&1; then
-    echo ">> unstable run: did not stop  <-- FAIL"; fail=1
+cp -r . ../maxCo3
+sed -i 's/^maxCo .*/maxCo           3;/' ../maxCo3/system/controlDict
+if jwlIbFoam -case ../maxCo3 > ../maxCo3.log 2>&1; then
+    echo ">> maxCo 3: accepted  <-- FAIL"; fail=1
+elif sed -n '/FOAM FATAL IO ERROR/,$p' ../maxCo3.log | grep -q "entry 'maxCo'" \
+  && sed -n '/FOAM FATAL IO ERROR/,$p' ../maxCo3.log | grep -q "system/controlDict" \
+  && [ "$(ls -d ../maxCo3/[0-9]* | grep -vc orig)" = 1 ]; then
+    echo ">> maxCo 3: rejected ($(grep -m1 "entry 'maxCo'" ../maxCo3.log | cut -c1-70))"
 else
-    msg=$(grep -m1 "non-physical state at time" log.unstable)
-    t=$(echo "$msg" | sed -n 's/.*at time \([^ ]*\) in cell.*/\1/p')
-    if [ -n "$t" ] && [ ! -d "$t" ]; then
-        echo ">> unstable run stopped: ${msg:0:90}"
-        echo ">> no time directory written for the failed time $t"
+    echo ">> maxCo 3: no FatalIOError naming controlDict and 'maxCo', or a time written  <-- FAIL"; fail=1
+fi
+
+sed -i 's/^adjustTimeStep .*/adjustTimeStep  no;/; s/^deltaT .*/deltaT          0.0026;/;
+        s/^writeControl .*/writeControl    timeStep;/; s/^writeInterval .*/writeInterval   1;/' \
+    system/controlDict
+jwlIbFoam > log.unstable 2>&1
+rc=$?
+if [ $rc = 0 ] || [ $rc -ge 128 ]; then
+    echo ">> unstable run: exit status $rc (did not stop, or crashed)  <-- FAIL"; fail=1
+else
+    msg=$(sed -n '/FOAM FATAL ERROR/{n;p;q}' log.unstable)
+    t=$(echo "$msg" | sed -n 's/.*non-physical state at time \([^ ]*\) in cell [0-9]* (centre (.*/\1/p')
+    last=$(ls -d [0-9]* | grep -v orig | sort -g | tail -1)
+    if [ "$t" = 0.0078 ] && [ ! -d "$t" ] && [ "$last" = 0.0052 ]; then
+        echo ">> unstable run stopped (exit $rc): ${msg:0:160}"
+        echo ">> no time directory written for the failed time $t; last written $last"
     else
-        echo ">> unstable run: message or time directory wrong  <-- FAIL"; fail=1
+        echo ">> unstable run: message, failed time '$t' or last written time '$last' wrong  <-- FAIL"
+        echo ">>   $msg"; fail=1
+    fi
+    # The last good time is readable: restart from it with a stable step
+    sed -i 's/^adjustTimeStep .*/adjustTimeStep  yes;/; s/^startFrom .*/startFrom       latestTime;/;
+            s/^endTime .*/endTime         0.0152;/; s/^writeControl .*/writeControl    adjustableRunTime;/;
+            s/^writeInterval .*/writeInterval   0.01;/' system/controlDict
+    if jwlIbFoam > log.restart 2>&1 && grep -q "restart from the conservative state of time 0.0052" log.restart \
+       && [ -d 0.0152 ]; then
+        echo ">> restart from $last with adjustTimeStep yes: ran $(grep -c "^Time = " log.restart) steps to 0.0152"
+    else
+        echo ">> restart from the last good time $last failed  <-- FAIL"; tail -5 log.restart; fail=1
     fi
 fi
 exit $fail

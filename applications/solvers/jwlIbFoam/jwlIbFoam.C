@@ -56,6 +56,7 @@ Description
 #include "runProgress.H"
 #include "OFstream.H"
 #include "IOmanip.H"
+#include "clockValue.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -106,6 +107,7 @@ int main(int argc, char *argv[])
     #include "createFields.H"
     #include "createSolid.H"
     #include "createTimeControls.H"
+    #include "checkTimeControls.H"
     #include "createDiagnostics.H"
 
     // SIGINT/SIGTERM: write the current step and stop; a progress line
@@ -117,6 +119,10 @@ int main(int argc, char *argv[])
         runTime.controlDict().getOrDefault<scalar>("progressInterval", 5)
     );
 
+    // Wall-clock time of the parts of a step (printed at the end):
+    // the coupling is project + updateFluidFraction + solidForces
+    double tGas = 0, tProject = 0, tFraction = 0, tForces = 0, tSolid = 0;
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
@@ -125,8 +131,12 @@ int main(int argc, char *argv[])
 
         if (hasSolid)
         {
+            const clockValue t0(clockValue::now());
             couplingPtr->project(solidPtr->x(), solidPtr->v());
+            const clockValue t1(clockValue::now());
             fluid.updateFluidFraction();
+            tProject += t1 - t0;
+            tFraction += t1.elapsed();
         }
 
         #include "setDeltaT.H"
@@ -134,12 +144,17 @@ int main(int argc, char *argv[])
         ++runTime;
         const scalar dt = runTime.deltaTValue();
 
-        fluid.advance(dt);
+        {
+            const clockValue t0(clockValue::now());
+            fluid.advance(dt);
+            tGas += t0.elapsed();
+        }
 
         label nSubSteps = 0;
         if (hasSolid)
         {
             femdemSolid& solid = solidPtr();
+            const clockValue t0(clockValue::now());
             couplingPtr->solidForces
             (
                 solid.x(), solid.topology(), solid.jointBroken(), fluid.p(),
@@ -147,7 +162,10 @@ int main(int argc, char *argv[])
                 solidNodeForces
             );
             solid.externalForce() = solidNodeForces;
+            const clockValue t1(clockValue::now());
+            tForces += t1 - t0;
             nSubSteps = solid.advance(dt);
+            tSolid += t1.elapsed();
         }
 
         #include "writeDiagnostics.H"
@@ -163,6 +181,12 @@ int main(int argc, char *argv[])
         runTime.write();
     }
 
+    const double tCoupling = tProject + tFraction + tForces;
+    Info<< "Timing: gas " << tGas << " s, coupling " << tCoupling << " s ("
+        << (tGas > 0 ? 100*tCoupling/tGas : 0) << " % of gas; project "
+        << tProject << " s, updateFluidFraction " << tFraction
+        << " s, solidForces " << tForces << " s), solid " << tSolid << " s"
+        << nl;
     Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
         << "  ClockTime = " << runTime.elapsedClockTime() << " s"
         << nl << "End\n" << endl;

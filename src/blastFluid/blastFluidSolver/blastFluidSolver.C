@@ -9,6 +9,7 @@
 #include "blastFluidSolver.H"
 #include "blastLimiters.H"
 #include "surfaceFields.H"
+#include "OStringStream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -37,6 +38,94 @@ namespace
             r,
             Foam::IOobject::AUTO_WRITE
         );
+    }
+
+
+    //- Stop on an entry of dict that is not in valid (a misspelt optional
+    //  entry would otherwise be ignored silently and its default used)
+    void checkKnownEntries
+    (
+        const Foam::dictionary& dict,
+        const Foam::wordList& valid
+    )
+    {
+        for (const Foam::entry& e : dict)
+        {
+            const Foam::word& key = e.keyword();
+            if (key != "FoamFile" && !valid.found(key))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Unknown entry '" << key << "'. Valid entries: "
+                    << flatOutput(valid)
+                    << Foam::exit(Foam::FatalIOError);
+            }
+        }
+    }
+
+
+    //- Stop unless every value of the field read from its file (cells and
+    //  patch faces) lies in [lower, upper] (lowerOpen: (lower, upper]),
+    //  naming the file, the entry and the cell or face. Called before the
+    //  equation of state sees the values.
+    void checkFieldRange
+    (
+        const Foam::volScalarField& f,
+        const Foam::scalar lower,
+        const bool lowerOpen,
+        const Foam::scalar upper,
+        const char* what
+    )
+    {
+        using namespace Foam;
+        auto ok = [&](const scalar v)
+        {
+            return (lowerOpen ? v > lower : v >= lower) && v <= upper;
+        };
+        const std::string range
+        (
+            upper < GREAT
+          ? (lowerOpen ? "in (" : "in [") + name(lower) + ", "
+            + name(upper) + "]"
+          : (lowerOpen ? "> " : ">= ") + name(lower)
+        );
+
+        label bad = -1;
+        const scalarField& vf = f.primitiveField();
+        forAll(vf, i)
+        {
+            if (!ok(vf[i])) { bad = i; break; }
+        }
+        if (bad >= 0)
+        {
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__, f.objectPath(), -1, -1
+            )
+                << "entry 'internalField': " << f.name() << " = "
+                << vf[bad] << " in cell " << bad << " (centre "
+                << f.mesh().C()[bad] << "); " << what << " must be "
+                << range.c_str() << exit(FatalIOError);
+        }
+        forAll(f.boundaryField(), patchi)
+        {
+            const fvPatchScalarField& pf = f.boundaryField()[patchi];
+            forAll(pf, j)
+            {
+                if (!ok(pf[j]))
+                {
+                    FatalIOError
+                    (
+                        FUNCTION_NAME, __FILE__, __LINE__, f.objectPath(),
+                        -1, -1
+                    )
+                        << "entry 'boundaryField." << pf.patch().name()
+                        << "': " << f.name() << " = " << pf[j]
+                        << " on face " << j << " of patch "
+                        << pf.patch().name() << "; " << what << " must be "
+                        << range.c_str() << exit(FatalIOError);
+                }
+            }
+        }
     }
 }
 
@@ -68,7 +157,12 @@ void Foam::blastFluidSolver::readControls()
             << exit(FatalIOError);
     }
 
+    checkKnownEntries
+    (
+        fluidDict_, wordList({"flux", "limiter", "RKorder", "QScheme"})
+    );
     const dictionary& Qdict = fluidDict_.subOrEmptyDict("QScheme");
+    checkKnownEntries(Qdict, wordList({"active", "CQ", "CL"}));
     QActive_ = Qdict.getOrDefault<bool>("active", false);
     CQ_ = Qdict.getOrDefault<scalar>("CQ", 1.5);
     CL_ = Qdict.getOrDefault<scalar>("CL", 0.06);
@@ -200,28 +294,20 @@ void Foam::blastFluidSolver::conservativeFromPrimitive()
     const vectorField& U = U_.primitiveField();
     const scalarField& p = p_.primitiveField();
 
+    // The initial fields as read, before any EOS evaluation (a negative
+    // density or pressure could trap in the EOS)
+    checkFieldRange(p_, 0, true, GREAT, "the pressure");
+
     if (twoPhase_)
     {
         scalarField& alpha = alpha1Ptr_->primitiveFieldRef();
         const scalarField& r1 = rho1Ptr_->primitiveField();
         const scalarField& r2 = rho2Ptr_->primitiveField();
+        checkFieldRange(alpha1Ptr_(), 0, false, 1, "a volume fraction");
+        checkFieldRange(rho1Ptr_(), 0, true, GREAT, "a phase density");
+        checkFieldRange(rho2Ptr_(), 0, true, GREAT, "a phase density");
         for (label i = 0; i < n; ++i)
         {
-            if (!(alpha[i] >= 0 && alpha[i] <= 1))
-            {
-                FatalErrorInFunction
-                    << "Field " << alpha1Ptr_->name() << " out of [0, 1] in"
-                    << " cell " << i << ": " << alpha[i]
-                    << exit(FatalError);
-            }
-            if (!(r1[i] > 0) || !(r2[i] > 0))
-            {
-                FatalErrorInFunction
-                    << "Non-positive phase density in cell " << i
-                    << ": " << rho1Ptr_->name() << " = " << r1[i] << ", "
-                    << rho2Ptr_->name() << " = " << r2[i]
-                    << exit(FatalError);
-            }
             rho[i] = alpha[i]*r1[i] + (1 - alpha[i])*r2[i];
             alphaRho1Ptr_->primitiveFieldRef()[i] = alpha[i]*r1[i];
         }
@@ -229,18 +315,12 @@ void Foam::blastFluidSolver::conservativeFromPrimitive()
     }
     else
     {
+        checkFieldRange(rho_, 0, true, GREAT, "the density");
         mixture_.rhoeC2(n, rho, rho, rho, rho, p, rhoe_, c_);
     }
 
     for (label i = 0; i < n; ++i)
     {
-        if (!(rho[i] > 0) || !(p[i] > 0))
-        {
-            FatalErrorInFunction
-                << "Initial state: non-positive density or pressure in cell "
-                << i << ": rho = " << rho[i] << ", p = " << p[i]
-                << exit(FatalError);
-        }
         rhoU_.primitiveFieldRef()[i] = rho[i]*U[i];
         rhoE_.primitiveFieldRef()[i] = rhoe_[i] + 0.5*rho[i]*magSqr(U[i]);
     }
@@ -353,22 +433,42 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
             return false;
         }
     }
-    if (bad >= 0)
-    {
-        Pout<< "blastFluidSolver: non-physical state at time "
-            << mesh_.time().timeName() << " in cell " << bad
-            << " (centre " << mesh_.C()[bad] << "): rho = " << rho[bad]
-            << ", p = " << p[bad] << ", U = " << U[bad]
-            << ", rhoE = " << rhoE[bad] << endl;
-    }
     if (returnReduce(bad >= 0, orOp<bool>()))
     {
+        // Name the first bad cell (of the lowest processor that has one)
+        // in the message every rank prints
+        List<string> where(Pstream::nProcs());
+        if (bad >= 0)
+        {
+            OStringStream os;
+            os.precision(8);
+            os  << "cell " << bad;
+            if (Pstream::parRun())
+            {
+                os  << " of processor " << Pstream::myProcNo();
+            }
+            os  << " (centre " << mesh_.C()[bad] << "): rho = " << rho[bad]
+                << ", p = " << p[bad] << ", U = " << U[bad]
+                << ", rhoE = " << rhoE[bad];
+            where[Pstream::myProcNo()] = os.str();
+        }
+        Pstream::gatherList(where);
+        Pstream::scatterList(where);
+        string first;
+        forAll(where, proci)
+        {
+            if (!where[proci].empty())
+            {
+                first = where[proci];
+                break;
+            }
+        }
         FatalErrorInFunction
-            << "Negative or non-finite density/pressure at time "
-            << mesh_.time().timeName() << " (step to "
-            << mesh_.time().value() << "), see the cell reported above."
-            << " Stopping without writing this time; the last written time"
-            << " is the last good state." << exit(FatalError);
+            << "Negative or non-finite density/pressure: non-physical"
+            << " state at time " << mesh_.time().timeName() << " in "
+            << first.c_str() << nl
+            << "    Stopping without writing this time; the last written"
+            << " time is the last good state." << exit(FatalError);
     }
 
     p_.correctBoundaryConditions();

@@ -388,13 +388,16 @@ void Foam::blastFluidSolver::setSolid
 void Foam::blastFluidSolver::updateFluidFraction()
 {
     // When the solid moves, a cell that loses gas volume pushes the gas of
-    // that volume, with the work p dV, through its open faces into its
-    // neighbours; a cell that gains gas volume draws it through its open
-    // faces from the neighbours that hold gas, which do the work p dV on
-    // the solid. Every transfer is a face quantity computed from the states
-    // before the move, identical on both sides of a processor face: mass,
-    // momentum and energy are conserved and a decomposed run gives the
-    // serial answer.
+    // that volume into its neighbours, which receive the work p dV; a cell
+    // that gains gas volume draws it from neighbours that hold gas, which
+    // pay the work p dV. The transfers go preferably across the faces
+    // whose closed part (seen from the neighbour) changes, at the
+    // neighbour's pressure: that is where and with which pressure the gas
+    // pushes the solid (addSolidForcing), so the work the gas does equals
+    // the work the solid receives. Every transfer is a face quantity
+    // computed from the states before the move, identical on both sides of
+    // a processor face: mass, momentum and energy are conserved and a
+    // decomposed run gives the serial answer.
     volScalarField& phiField = fluidFractionPtr_();
     scalarField& phi = phiField.primitiveFieldRef();
     const scalarField& alphaS = alphaSolidPtr_->primitiveField();
@@ -427,84 +430,120 @@ void Foam::blastFluidSolver::updateFluidFraction()
         }
     }
 
-    // A closing cell pushes its gas out through the faces it had open to
-    // neighbours that stay open (so that a cell that closes completely
-    // empties); an opening cell draws through the faces open after the
-    // move from neighbours that held gas and keep some
-    auto outArea = [](const scalar phiOldA, const scalar phiA, const scalar phiB)
+    // Weights of the transfers across a face between cell a (changing) and
+    // its neighbour b. Preferred: the change of the face's closed part seen
+    // from b, because that closed part is where the solid force on the gas
+    // of b acts (blastFluidSolver::addSolidForcing); moving gas there does
+    // the work p_b dV that matches the work of that force on the solid.
+    // Otherwise (a crack opening inside the solid, say): the open area.
+    struct faceWeights
     {
-        return min(max(phiOldA, phiA), phiB);
+        scalar drawClosed, drawOpen, pushClosed, pushOpen;
     };
-    auto donates = [](const scalar phiOldA, const scalar phiA)
+    auto weights = [](const scalar phiOldA, const scalar phiA,
+                      const scalar phiOldB, const scalar phiB, const scalar S)
     {
-        return phiOldA > 0 && phiA > 0;
+        const scalar closedOld = max(phiOldB - phiOldA, scalar(0));
+        const scalar closedNew = max(phiB - phiA, scalar(0));
+        const bool bDonates = phiOldB > 0 && phiB > 0;
+        faceWeights w;
+        w.drawClosed = bDonates ? max(closedOld - closedNew, scalar(0))*S : 0;
+        w.drawOpen = bDonates ? min(phiA, phiB)*S : 0;
+        w.pushClosed = phiB > 0 ? max(closedNew - closedOld, scalar(0))*S : 0;
+        w.pushOpen = min(max(phiOldA, phiA), phiB)*S;
+        return w;
     };
-    scalarField openArea(nFaces_, 0), outOwn(nFaces_, 0), outNei(nFaces_, 0);
-    scalarField sumOpen(nCells, 0), sumDonor(nCells, 0);
+    // Face f seen from its owner (a = owner) and from its neighbour
+    List<faceWeights> wOwn(nFaces_), wNei(nFaces_);
+    scalarField sumDrawClosed(nCells, 0), sumDrawOpen(nCells, 0);
+    scalarField sumPushClosed(nCells, 0), sumPushOpen(nCells, 0);
+    auto addSums = [&](const label a, const faceWeights& w)
+    {
+        sumDrawClosed[a] += w.drawClosed;
+        sumDrawOpen[a] += w.drawOpen;
+        sumPushClosed[a] += w.pushClosed;
+        sumPushOpen[a] += w.pushOpen;
+    };
     for (label f = 0; f < nInternal_; ++f)
     {
         const label P = own_[f], N = nei_[f];
-        openArea[f] = min(phi[P], phi[N])*magSf_[f];
-        outOwn[f] = outArea(phiOld[P], phi[P], phi[N])*magSf_[f];
-        outNei[f] = outArea(phiOld[N], phi[N], phi[P])*magSf_[f];
-        sumOpen[P] += outOwn[f];
-        sumOpen[N] += outNei[f];
-        if (donates(phiOld[N], phi[N])) sumDonor[P] += openArea[f];
-        if (donates(phiOld[P], phi[P])) sumDonor[N] += openArea[f];
+        wOwn[f] = weights(phiOld[P], phi[P], phiOld[N], phi[N], magSf_[f]);
+        wNei[f] = weights(phiOld[N], phi[N], phiOld[P], phi[P], magSf_[f]);
+        addSums(P, wOwn[f]);
+        addSums(N, wNei[f]);
     }
     for (label cf = nInternal_; cf < nFaces_; ++cf)
     {
-        const label b = cf - nInternal_;
+        const label b = cf - nInternal_, P = own_[cf];
         if (!coupledFace[b]) continue;
-        const label P = own_[cf];
-        openArea[cf] = min(phi[P], phiNbr[b])*magSf_[cf];
-        outOwn[cf] = outArea(phiOld[P], phi[P], phiNbr[b])*magSf_[cf];
-        outNei[cf] = outArea(phiOldNbr[b], phiNbr[b], phi[P])*magSf_[cf];
-        sumOpen[P] += outOwn[cf];
-        if (donates(phiOldNbr[b], phiNbr[b])) sumDonor[P] += openArea[cf];
+        wOwn[cf] =
+            weights(phiOld[P], phi[P], phiOldNbr[b], phiNbr[b], magSf_[cf]);
+        wNei[cf] =
+            weights(phiOldNbr[b], phiNbr[b], phiOld[P], phi[P], magSf_[cf]);
+        addSums(P, wOwn[cf]);
     }
 
-    // Per cell: the volume pushed out and the volume drawn in per unit
-    // area of the faces concerned. Pushed-out gas arrives with the work
-    // p dV of the solid on it (energy rhoE + p per unit volume); a donor
-    // gives its state and pays the work p dV done on the solid (at most
-    // half of its internal energy), so that the receiver starts at the
-    // donor's pressure.
+    // Per cell: the volume pushed out or drawn in per unit weight, with the
+    // closed-part weights if the cell has any, the open ones otherwise.
+    // Pushed-out gas receives the work p dV at the receiver's pressure; a
+    // donor pays the work p dV at its pressure (at most half of its
+    // internal energy).
     auto newField = [&](const word& name)
     {
         return volScalarField(name, phiField*0);
     };
-    volScalarField outVolume(newField("outVolume"));
-    volScalarField inVolume(newField("inVolume"));
-    volScalarField pushedRhoE(newField("pushedRhoE"));
-    scalarField& out = outVolume.primitiveFieldRef();
-    scalarField& in = inVolume.primitiveFieldRef();
-    scalarField& pushedE = pushedRhoE.primitiveFieldRef();
+    volScalarField outClosedField(newField("outClosed"));
+    volScalarField outOpenField(newField("outOpen"));
+    volScalarField inClosedField(newField("inClosed"));
+    volScalarField inOpenField(newField("inOpen"));
+    scalarField& outClosed = outClosedField.primitiveFieldRef();
+    scalarField& outOpen = outOpenField.primitiveFieldRef();
+    scalarField& inClosed = inClosedField.primitiveFieldRef();
+    scalarField& inOpen = inOpenField.primitiveFieldRef();
     scalarField drawWork(nCells, 0);
     scalar created = 0;
     forAll(phi, i)
     {
         const scalar dV = phi[i]*V[i] - vOld[i];
-        if (dV < 0 && sumOpen[i] > 0)
+        if (dV < 0 && sumPushClosed[i] > 0)
         {
-            out[i] = -dV/sumOpen[i];
+            outClosed[i] = -dV/sumPushClosed[i];
+        }
+        else if (dV < 0 && sumPushOpen[i] > 0)
+        {
+            outOpen[i] = -dV/sumPushOpen[i];
         }
         else if (dV < 0 && phi[i] < minFluidFraction_)
         {
             // Nowhere to go (a closed pocket): stays minimally open
             phi[i] = minFluidFraction_;
         }
-        else if (dV > 0 && sumDonor[i] > 0)
+        else if (dV > 0 && sumDrawClosed[i] > 0)
         {
-            in[i] = dV/sumDonor[i];
+            inClosed[i] = dV/sumDrawClosed[i];
+        }
+        else if (dV > 0 && sumDrawOpen[i] > 0)
+        {
+            inOpen[i] = dV/sumDrawOpen[i];
         }
         const scalar rhoe = rhoE_[i] - 0.5*magSqr(rhoU_[i])/rho_[i];
-        pushedE[i] = rhoE_[i] + p[i];
         drawWork[i] = min(p[i], 0.5*rhoe);
     }
-    outVolume.correctBoundaryConditions();
-    inVolume.correctBoundaryConditions();
-    pushedRhoE.correctBoundaryConditions();
+    // Volumes moved across face f from the cell on one side (a, weights w
+    // seen from a) to the other, or drawn by a from the other
+    auto pushVolume = [](const scalar oC, const scalar oO, const faceWeights& w)
+    {
+        return oC*w.pushClosed + oO*w.pushOpen;
+    };
+    auto drawVolume = [](const scalar iC, const scalar iO, const faceWeights& w)
+    {
+        return iC*w.drawClosed + iO*w.drawOpen;
+    };
+    for (volScalarField* fld :
+        {&outClosedField, &outOpenField, &inClosedField, &inOpenField})
+    {
+        fld->correctBoundaryConditions();
+    }
     rho_.correctBoundaryConditions();
     rhoU_.correctBoundaryConditions();
     rhoE_.correctBoundaryConditions();
@@ -514,11 +553,13 @@ void Foam::blastFluidSolver::updateFluidFraction()
         alpha1Ptr_->correctBoundaryConditions();
     }
 
-    scalarField outNbr, inNbr, pushedENbr, rhoNbr, rhoENbr, rho1Nbr, alpha1Nbr;
+    scalarField outCNbr, outONbr, inCNbr, inONbr;
+    scalarField rhoNbr, rhoENbr, rho1Nbr, alpha1Nbr;
     vectorField rhoUNbr;
-    coupledNeighbourValues(outVolume, outNbr);
-    coupledNeighbourValues(inVolume, inNbr);
-    coupledNeighbourValues(pushedRhoE, pushedENbr);
+    coupledNeighbourValues(outClosedField, outCNbr);
+    coupledNeighbourValues(outOpenField, outONbr);
+    coupledNeighbourValues(inClosedField, inCNbr);
+    coupledNeighbourValues(inOpenField, inONbr);
     coupledNeighbourValues(rho_, rhoNbr);
     coupledNeighbourValues(rhoU_, rhoUNbr);
     coupledNeighbourValues(rhoE_, rhoENbr);
@@ -537,6 +578,40 @@ void Foam::blastFluidSolver::updateFluidFraction()
         alpha1Nbr = rhoNbr;
     }
 
+    // A donor gives at most half of the gas it keeps after pushing (then
+    // its internal energy stays positive, drawWork <= rhoe/2): a small
+    // pocket next to a cell that opens widely would otherwise give more
+    // gas than it holds (negative mass); the receiver expands instead
+    volScalarField drawScale(newField("drawScale"));
+    {
+        scalarField& s = drawScale.primitiveFieldRef();
+        scalarField asked(nCells, 0), pushed(nCells, 0);
+        for (label f = 0; f < nInternal_; ++f)
+        {
+            const label P = own_[f], N = nei_[f];
+            asked[N] += drawVolume(inClosed[P], inOpen[P], wOwn[f]);
+            asked[P] += drawVolume(inClosed[N], inOpen[N], wNei[f]);
+            pushed[P] += pushVolume(outClosed[P], outOpen[P], wOwn[f]);
+            pushed[N] += pushVolume(outClosed[N], outOpen[N], wNei[f]);
+        }
+        for (label cf = nInternal_; cf < nFaces_; ++cf)
+        {
+            const label b = cf - nInternal_, P = own_[cf];
+            if (!coupledFace[b]) continue;
+            asked[P] += drawVolume(inCNbr[b], inONbr[b], wNei[cf]);
+            pushed[P] += pushVolume(outClosed[P], outOpen[P], wOwn[cf]);
+        }
+        forAll(s, i)
+        {
+            const scalar kept = 0.5*max(vOld[i] - pushed[i], scalar(0));
+            s[i] = asked[i] > kept ? kept/asked[i] : 1;
+        }
+        drawScale.correctBoundaryConditions();
+    }
+    const scalarField& drawS = drawScale.primitiveField();
+    scalarField drawSNbr;
+    coupledNeighbourValues(drawScale, drawSNbr);
+
     gasContent c(*this, vOld/V);
     const scalarField rhoOld(rho_.primitiveField());
     const vectorField rhoUOld(rhoU_.primitiveField());
@@ -547,56 +622,79 @@ void Foam::blastFluidSolver::updateFluidFraction()
         c.add(a, -v, rhoOld[a], rhoUOld[a], rhoE_[a] + w, rho1[a], alpha1[a]);
     };
     // Cell a pushes volume v into b; cell b draws volume v from a
+    scalarField pushedOut(nCells, 0), drawnIn(nCells, 0);
     auto push = [&](const label a, const label b, const scalar v)
     {
-        c.add(b, v, rhoOld[a], rhoUOld[a], pushedE[a], rho1[a], alpha1[a]);
+        if (v <= 0) return;
+        c.add(b, v, rhoOld[a], rhoUOld[a], rhoE_[a] + p[b], rho1[a], alpha1[a]);
         give(a, v, 0);
+        pushedOut[a] += v;
     };
     auto draw = [&](const label a, const label b, const scalar v)
     {
+        if (v <= 0) return;
         c.add(b, v, rhoOld[a], rhoUOld[a], rhoE_[a], rho1[a], alpha1[a]);
         give(a, v, drawWork[a]);
+        drawnIn[b] += v;
     };
     for (label f = 0; f < nInternal_; ++f)
     {
         const label P = own_[f], N = nei_[f];
-        const scalar A = openArea[f];
-        if (out[P] > 0 && outOwn[f] > 0) push(P, N, out[P]*outOwn[f]);
-        if (out[N] > 0 && outNei[f] > 0) push(N, P, out[N]*outNei[f]);
-        if (A <= 0) continue;
-        if (in[P] > 0 && donates(phiOld[N], phi[N])) draw(N, P, in[P]*A);
-        if (in[N] > 0 && donates(phiOld[P], phi[P])) draw(P, N, in[N]*A);
+        push(P, N, pushVolume(outClosed[P], outOpen[P], wOwn[f]));
+        push(N, P, pushVolume(outClosed[N], outOpen[N], wNei[f]));
+        draw(N, P, drawS[N]*drawVolume(inClosed[P], inOpen[P], wOwn[f]));
+        draw(P, N, drawS[P]*drawVolume(inClosed[N], inOpen[N], wNei[f]));
     }
     for (label cf = nInternal_; cf < nFaces_; ++cf)
     {
         // The other side of a processor face adds the same amounts
         const label b = cf - nInternal_, P = own_[cf];
         if (!coupledFace[b]) continue;
-        const scalar A = openArea[cf];
-        const scalar vPushOut = out[P]*outOwn[cf];
-        const scalar vPushIn = outNbr[b]*outNei[cf];
+        const scalar vPushOut = pushVolume(outClosed[P], outOpen[P], wOwn[cf]);
+        const scalar vPushIn = pushVolume(outCNbr[b], outONbr[b], wNei[cf]);
         const scalar vDrawOut =
-            donates(phiOld[P], phi[P]) ? inNbr[b]*A : 0;
+            drawS[P]*drawVolume(inCNbr[b], inONbr[b], wNei[cf]);
         const scalar vDrawIn =
-            donates(phiOldNbr[b], phiNbr[b]) ? in[P]*A : 0;
-        if (vPushOut > 0) give(P, vPushOut, 0);
-        if (vDrawOut > 0) give(P, vDrawOut, drawWork[P]);
+            drawSNbr[b]*drawVolume(inClosed[P], inOpen[P], wOwn[cf]);
+        if (vPushOut > 0)
+        {
+            give(P, vPushOut, 0);
+            pushedOut[P] += vPushOut;
+        }
+        if (vDrawOut > 0)
+        {
+            give(P, vDrawOut, drawWork[P]);
+        }
         if (vPushIn > 0)
         {
             c.add
             (
-                P, vPushIn, rhoNbr[b], rhoUNbr[b], pushedENbr[b], rho1Nbr[b],
-                alpha1Nbr[b]
+                P, vPushIn, rhoNbr[b], rhoUNbr[b], rhoENbr[b] + p[P],
+                rho1Nbr[b], alpha1Nbr[b]
             );
         }
         if (vDrawIn > 0)
         {
+            drawnIn[P] += vDrawIn;
             c.add
             (
                 P, vDrawIn, rhoNbr[b], rhoUNbr[b], rhoENbr[b], rho1Nbr[b],
                 alpha1Nbr[b]
             );
         }
+    }
+
+    // The volume change no transfer covered: the cell's own gas expands
+    // (no donor, or limited donors) or is compressed in place (a closed
+    // pocket); it does or receives the work p dV like transferred gas
+    forAll(phi, i)
+    {
+        if (vOld[i] <= 0) continue;
+        const scalar dV = phi[i]*V[i] - vOld[i];
+        const scalar self =
+            dV > 0 ? dV - drawnIn[i] : dV + pushedOut[i];
+        const scalar rhoe = rhoE_[i] - 0.5*magSqr(rhoU_[i])/rho_[i];
+        c.energy[i] -= min(p[i]*self, 0.5*rhoe*vOld[i]);
     }
 
     // Cells opened without a neighbour holding gas: filled with their

@@ -57,6 +57,18 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
     triangles_(nTriangles),
     alphaSolidRead_(alphaSolid_.headerOk())
 {
+    // A misspelt optional entry would silently take its default
+    const wordList valid({"beta", "minFluidFraction", "crackPressure"});
+    for (const entry& e : dict)
+    {
+        if (e.keyword() != "FoamFile" && !valid.found(e.keyword()))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown entry '" << e.keyword()
+                << "'. Valid entries: " << flatOutput(valid)
+                << exit(FatalIOError);
+        }
+    }
     if (!(beta_ > 0))
     {
         FatalIOErrorInFunction(dict)
@@ -183,10 +195,18 @@ void Foam::immersedBodyCoupling::addCrackPressure
         {
             continue;   // closed crack: no gas between the faces
         }
+        // Only a crack narrower than the fluid cells: once its faces lie in
+        // different cells, the fluid mesh sees the gap and its wall faces
+        // already push each side (counting them again would create energy)
         const label celli = mesh_.findCell(point(mid.x(), mid.y(), zMid));
-        if (celli < 0 || fluidFraction[celli] <= 0)
+        const vector2D midB = mid + gapMid;
+        if
+        (
+            celli < 0 || fluidFraction[celli] <= 0
+         || mesh_.findCell(point(midB.x(), midB.y(), zMid)) != celli
+        )
         {
-            continue;   // elsewhere, or no gas in the cell
+            continue;
         }
         // Gas pushes A along -n and B along +n: an internal pair
         const vector2D f = 0.5*p[celli]*nL;

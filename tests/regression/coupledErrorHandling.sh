@@ -1,0 +1,136 @@
+#!/bin/bash
+# Regression: the coupled solver (jwlIbFoam with an immersed FEMDEM solid)
+# stops cleanly. Case: tests/regression/coupledData/closedBoxSolid (free
+# rock disc thrown through air at rest in a periodic box) on 20x20 cells,
+# 38 triangles, adjustTimeStep no.
+#  1. divergence: deltaT 2e-5 (gas Courant number about 1.4; the solid
+#     sub-cycles with its own stable step) written every 5 steps: the run
+#     stops at step 15 (t = 3e-4, a write time) with exit status 1 and a
+#     message naming the time, the cell and its centre; 3e-4 is not
+#     written; the last written time 2e-4 holds the gas fields,
+#     alpha.solid, fluidFraction and uniform/femdemState, and a restart
+#     from it (adjustTimeStep yes) reads gas and solid and runs to 2.2e-4.
+#  2. SIGTERM and SIGINT during a run (deltaT 2e-6, no write time before
+#     endTime): exit status 0, 'Signal SIG<x> received at time t', the
+#     step t is written (gas fields, alpha.solid, fluidFraction,
+#     uniform/femdemState) and equals an uninterrupted run ending at t
+#     (compareCases.py: max relative difference 0); a restart from t for
+#     10 steps equals an uninterrupted run to t + 10 steps (1e-12).
+set -u
+cd "$JWLIBFOAM_TEST_DIR" || exit 1
+data=$JWLIBFOAM_PROJECT/tests/regression/coupledData
+compare=$data/compareCases.py
+fail() { echo ">> $*  <-- FAIL"; exit 1; }
+setEntry() {  # case key value: replace the line 'key ...;' of controlDict
+    sed -i "s/^$2 .*/$2 $3;/" "$1/system/controlDict"
+}
+timeDirs() {  # case: its time directories, sorted
+    (cd "$1" && ls -d [0-9]* 2> /dev/null | sort -g | tr '\n' ' ')
+}
+stateFiles="p U rho rhoU rhoE alpha.solid U.solid fluidFraction uniform/femdemState"
+complete() {  # time directory: every state file is there and not empty
+    local f
+    for f in $stateFiles; do [ -s "$1/$f" ] || return 1; done
+}
+
+# Base: the small closed box, meshed once
+rm -rf base && cp -r "$data/closedBoxSolid" base
+sed -i 's/(80 80 1)/(20 20 1)/' base/system/blockMeshDict
+sed -i 's/^targetSize .*/targetSize 0.02;/; s/nSegments 48/nSegments 12/' base/system/femdemMeshDict
+(cd base && blockMesh > log.blockMesh 2>&1 && femdemMesh > log.femdemMesh 2>&1) \
+    || fail "blockMesh/femdemMesh on the base case"
+
+# ------------------------------------------------------------- divergence
+rm -rf diverge && cp -r base diverge
+setEntry diverge deltaT 2e-5
+setEntry diverge endTime 1e-2
+setEntry diverge writeInterval 5
+(cd diverge && jwlIbFoam > log.jwlIbFoam 2>&1)
+rc=$?
+log=diverge/log.jwlIbFoam
+[ $rc = 0 ] && fail "divergence: the run did not stop"
+{ [ $rc -ge 128 ] || grep -v '^trapFpe' $log | grep -qiE 'segmentation|sigfpe|floating point exception|stack trace'; } \
+    && fail "divergence: crashed (exit $rc)"
+msg=$(sed -n '/FOAM FATAL ERROR/{n;p;q}' $log)
+t=$(echo "$msg" | sed -n 's/.*non-physical state at time \([^ ]*\) in cell [0-9]* (centre (.*/\1/p')
+[ "$t" = 0.0003 ] || fail "divergence: message does not name time 0.0003, a cell and its centre: $msg"
+echo ">> divergence stopped (exit $rc): ${msg:0:150}"
+[ -d diverge/$t ] && fail "divergence: the failed time $t was written"
+[ "$(timeDirs diverge)" = "0 0.0001 0.0002 " ] || fail "divergence: time directories $(timeDirs diverge)"
+complete diverge/0.0002 || fail "divergence: 0.0002 lacks one of: $stateFiles"
+echo ">> no time directory for the failed time $t; last written 0.0002 complete ($stateFiles)"
+setEntry diverge adjustTimeStep yes
+setEntry diverge endTime 2.2e-4
+(cd diverge && jwlIbFoam > log.restart 2>&1) || fail "divergence: restart from 0.0002 failed"
+grep -q "^blastFluidSolver: restart from the conservative state of time 0.0002" diverge/log.restart \
+    && grep -q "^Solid restarted from \"0.0002/uniform/femdemState\"" diverge/log.restart \
+    || fail "divergence: the restart did not read the gas and the solid of 0.0002"
+echo ">> restart from 0.0002 (adjustTimeStep yes) read gas and solid and ran" \
+     "$(grep -c '^Time = ' diverge/log.restart) steps to $(grep '^Time = ' diverge/log.restart | tail -1 | awk '{print $3}')"
+
+# ------------------------------------------------------------- signals
+# Far more steps than run before the signal, no write time before endTime,
+# a progress line every second
+setEntry base endTime 1
+setEntry base writeInterval 1000000
+echo "progressInterval 1;" >> base/system/controlDict
+
+uninterrupted() {  # name endTime steps: run the base to endTime, writing it
+    rm -rf "$1" && cp -r base "$1"
+    setEntry "$1" endTime "$2"
+    setEntry "$1" writeInterval "$3"
+    (cd "$1" && jwlIbFoam > log.jwlIbFoam 2>&1)
+}
+
+stopWith() {  # TERM or INT
+    local sig=$1 c=sig$1 pid n rc t last index d tEnd dR ok
+    rm -rf "$c" && cp -r base "$c"
+    cd "$c"
+    jwlIbFoam > log.jwlIbFoam 2>&1 &
+    pid=$!
+    for ((n = 0; n < 240; n++)); do
+        grep -q '^Progress: ' log.jwlIbFoam \
+            && [ "$(grep -c '^Time = ' log.jwlIbFoam)" -ge 3 ] && break
+        kill -0 $pid 2> /dev/null || break
+        sleep 0.5
+    done
+    if ! kill -0 $pid 2> /dev/null; then
+        wait $pid; fail "SIG$sig: jwlIbFoam ended (exit $?) before the signal"
+    fi
+    grep -q '^Progress: ' log.jwlIbFoam || { kill -KILL $pid; fail "SIG$sig: no progress line within 120 s"; }
+    kill -"$sig" $pid
+    wait $pid; rc=$?
+    [ $rc -eq 0 ] || fail "SIG$sig: exit status $rc (expected 0)"
+    grep -q '^End' log.jwlIbFoam || fail "SIG$sig: the log does not end with End"
+    t=$(sed -n "s/^Signal SIG$sig received at time \([^:]*\):.*/\1/p" log.jwlIbFoam)
+    [ -n "$t" ] || fail "SIG$sig: no 'Signal SIG$sig received' line"
+    last=$(grep '^Time = ' log.jwlIbFoam | tail -1 | awk '{print $3}')
+    [ "$t" = "$last" ] || fail "SIG$sig: stopped at $t but the last step is $last"
+    [ "$(timeDirs .)" = "0 $t " ] || fail "SIG$sig: time directories $(timeDirs .)"
+    complete "$t" || fail "SIG$sig: $t lacks one of: $stateFiles"
+    index=$(awk '/^index/ {print $2+0}' "$t/uniform/time")
+    cd ..
+
+    # The written state equals an uninterrupted run ending at t
+    uninterrupted "ref$sig" "$t" "$index" || fail "SIG$sig: reference run to $t"
+    d=$(/usr/bin/python3 "$compare" "ref$sig/$t" "$c/$t" | tail -1 | awk '{print $2}')
+
+    # Restart from t for 10 steps against an uninterrupted run
+    tEnd=$(awk -v t="$t" 'BEGIN { printf "%.10g", t + 10*2e-6 }')
+    setEntry "$c" endTime "$tEnd"
+    setEntry "$c" writeInterval $((index + 10))
+    (cd "$c" && jwlIbFoam > log.restart 2>&1) || fail "SIG$sig: restart from $t failed"
+    grep -q "^Solid restarted from \"$t/uniform/femdemState\"" "$c/log.restart" \
+        || fail "SIG$sig: the restart did not read $t/uniform/femdemState"
+    [ -d "$c/$tEnd" ] || fail "SIG$sig: the restart did not reach $tEnd"
+    uninterrupted "ref${sig}End" "$tEnd" $((index + 10)) || fail "SIG$sig: reference run to $tEnd"
+    dR=$(/usr/bin/python3 "$compare" "ref${sig}End/$tEnd" "$c/$tEnd" | tail -1 | awk '{print $2}')
+    ok=$(/usr/bin/python3 -c "print(int($d == 0 and $dR <= 1e-12))")
+    echo ">> SIG$sig: exit 0 at step $index (t = $t); written state vs an uninterrupted run:" \
+         "max relative difference $d (tolerance 0); restart +10 steps vs one run to $tEnd:" \
+         "$dR (tolerance 1e-12)$([ "$ok" = 1 ] || echo '  <-- FAIL')"
+    [ "$ok" = 1 ]
+}
+
+stopWith TERM || exit 1
+stopWith INT || exit 1
