@@ -1180,7 +1180,6 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     minFluidFraction_(0),
     absorptionBeta_(0),
     solidWork_(0),
-    createdMass_(0),
     primitivesCurrent_(false)
 {
     readControls();

@@ -501,7 +501,6 @@ void Foam::blastFluidSolver::updateFluidFraction()
     scalarField& inClosed = inClosedField.primitiveFieldRef();
     scalarField& inOpen = inOpenField.primitiveFieldRef();
     scalarField drawWork(nCells, 0);
-    scalar created = 0;
     forAll(phi, i)
     {
         const scalar dV = phi[i]*V[i] - vOld[i];
@@ -697,25 +696,19 @@ void Foam::blastFluidSolver::updateFluidFraction()
         c.energy[i] -= min(p[i]*self, 0.5*rhoe*vOld[i]);
     }
 
-    // Cells opened without a neighbour holding gas: filled with their
-    // frozen state (reported as created mass; normally none)
+    // A cell opened where no neighbour holds gas (a void inside the solid,
+    // a crack not yet reached by the gas) stays closed until gas can reach
+    // it: nothing is created
     forAll(phi, i)
     {
         if (vOld[i] == 0 && phi[i] > 0 && c.volume[i] <= 0)
         {
-            const scalar v = phi[i]*V[i];
-            c.scale(i, 0);
-            c.add
-            (
-                i, v, rhoOld[i], rhoUOld[i], rhoE_[i], rho1[i], alpha1[i]
-            );
-            created += v*rhoOld[i];
+            phi[i] = 0;
         }
     }
 
     // Energy given to the gas by the moving solid
     solidWork_ = returnReduce(sum(c.energy) - sum(rhoE_.primitiveField()*vOld), sumOp<scalar>());
-    createdMass_ += returnReduce(created, sumOp<scalar>());
     c.toState(phi);
 
     phiField.correctBoundaryConditions();

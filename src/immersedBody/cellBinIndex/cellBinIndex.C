@@ -11,13 +11,17 @@ License
 
 Foam::label Foam::cellBinIndex::binX(const scalar x) const
 {
-    return max(label(0), min(nx_ - 1, label((x - origin_.x())/binSize_.x())));
+    // Clamped in floating point first: a far or non-finite coordinate
+    // must not overflow the conversion
+    const scalar t = max((x - origin_.x())/binSize_.x(), scalar(0));
+    return label(min(t, scalar(nx_ - 1)));
 }
 
 
 Foam::label Foam::cellBinIndex::binY(const scalar y) const
 {
-    return max(label(0), min(ny_ - 1, label((y - origin_.y())/binSize_.y())));
+    const scalar t = max((y - origin_.y())/binSize_.y(), scalar(0));
+    return label(min(t, scalar(ny_ - 1)));
 }
 
 

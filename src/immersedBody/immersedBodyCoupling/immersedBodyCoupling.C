@@ -24,7 +24,7 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
     depth_(returnReduce(mesh.bounds().span().z(), maxOp<scalar>())),
     beta_(dict.getOrDefault<scalar>("beta", 1)),
     minFluidFraction_(dict.getOrDefault<scalar>("minFluidFraction", 0.02)),
-    crackPressure_(dict.getOrDefault<bool>("crackPressure", true)),
+    crackPressure_(dict.getOrDefault<bool>("crackPressure", false)),
     alphaSolid_
     (
         IOobject
@@ -174,7 +174,6 @@ void Foam::immersedBodyCoupling::addCrackPressure
     List<vector2D>& nodeForces
 ) const
 {
-    const scalar zMid = mesh_.bounds().centre().z();
     const List<jointNodeList>& jointNodes = topology.jointNodes();
     forAll(jointNodes, j)
     {
@@ -198,12 +197,11 @@ void Foam::immersedBodyCoupling::addCrackPressure
         // Only a crack narrower than the fluid cells: once its faces lie in
         // different cells, the fluid mesh sees the gap and its wall faces
         // already push each side (counting them again would create energy)
-        const label celli = mesh_.findCell(point(mid.x(), mid.y(), zMid));
-        const vector2D midB = mid + gapMid;
+        const label celli = projection_.findCell(mid);
         if
         (
             celli < 0 || fluidFraction[celli] <= 0
-         || mesh_.findCell(point(midB.x(), midB.y(), zMid)) != celli
+         || projection_.findCell(mid + gapMid) != celli
         )
         {
             continue;

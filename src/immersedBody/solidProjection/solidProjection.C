@@ -264,4 +264,29 @@ void Foam::solidProjection::distributeToPoints
 }
 
 
+Foam::label Foam::solidProjection::findCell(const vector2D& pt) const
+{
+    label found = -1;
+    index_.forEachCandidate
+    (
+        pt, pt,
+        [&](const label celli)
+        {
+            if (found >= 0) return;
+            // Inside a counter-clockwise convex polygon: left of every edge
+            const label start = cellStart_[celli], end = cellStart_[celli + 1];
+            for (label k = start; k < end; ++k)
+            {
+                const vector2D& a = cellVertices_[k];
+                const vector2D& b = cellVertices_[k + 1 < end ? k + 1 : start];
+                const vector2D ab = b - a, ap = pt - a;
+                if (ab.x()*ap.y() - ab.y()*ap.x() < 0) return;
+            }
+            found = celli;
+        }
+    );
+    return found;
+}
+
+
 // ************************************************************************* //

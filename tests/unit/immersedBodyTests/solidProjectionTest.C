@@ -172,3 +172,39 @@ TEST(solidProjection, forceDistributionConservesForce)
     RecordProperty("forceError", sci(forceError));
     EXPECT_LT(forceError, 1e-12);
 }
+
+
+TEST(solidProjection, findCellAgreesWithBruteForce)
+{
+    // Random points against a scan of every (convex) cell; outside -> -1
+    const auto grid = jitteredGrid(17, 13);
+    solidProjection projection(grid);
+    auto inside = [&](label c, const vector2D& p)
+    {
+        const label s = grid.second[c], e = grid.second[c + 1];
+        for (label k = s; k < e; ++k)
+        {
+            const vector2D ab = grid.first[k + 1 < e ? k + 1 : s] - grid.first[k];
+            const vector2D ap = p - grid.first[k];
+            if (ab.x()*ap.y() - ab.y()*ap.x() < 0) return false;
+        }
+        return true;
+    };
+    Random rnd(99);
+    label mismatches = 0, outside = 0;
+    for (label n = 0; n < 2000; ++n)
+    {
+        const vector2D p(1.2*rnd.sample01<scalar>() - 0.1, 1.2*rnd.sample01<scalar>() - 0.1);
+        label expected = -1;
+        for (label c = 0; c < projection.nCells() && expected < 0; ++c)
+        {
+            if (inside(c, p)) expected = c;
+        }
+        outside += expected < 0;
+        mismatches += projection.findCell(p) != expected;
+    }
+    EXPECT_EQ(projection.findCell(vector2D(GREAT, -GREAT)), -1);
+    RecordProperty("pointsOutside", std::to_string(outside));
+    EXPECT_GT(outside, 100);
+    EXPECT_EQ(mismatches, 0);
+}
