@@ -70,6 +70,27 @@ grep -q "^blastFluidSolver: restart from the conservative state of time $last" d
 echo ">> restart from $last (adjustTimeStep yes) read gas and solid and ran" \
      "$(grep -c '^Time = ' diverge/log.restart) steps to $(grep '^Time = ' diverge/log.restart | tail -1 | awk '{print $3}')"
 
+# ------------------------------------------------------- solid divergence
+# maxNodeSpeed 1e-9 m/s: the disc at rest starts to move as the ambient
+# pressure compresses it, so the solid counts as diverging at its first
+# sub-step; the run must stop cleanly (no FPE or stack trace), name the
+# time, the node and its speed, and write no time directory
+rm -rf solidDiverge && cp -r base solidDiverge
+sed -i 's/^initialVelocity .*/initialVelocity (0 0);/' solidDiverge/constant/femdemProperties
+echo "maxNodeSpeed 1e-9;" >> solidDiverge/constant/femdemProperties
+setEntry solidDiverge writeInterval 5
+(cd solidDiverge && jwlIbFoam > log.jwlIbFoam 2>&1)
+rc=$?
+log=solidDiverge/log.jwlIbFoam
+[ $rc = 0 ] && fail "solid divergence: the run did not stop"
+{ [ $rc -ge 128 ] || grep -v '^trapFpe' $log | grep -qiE 'segmentation|sigfpe|floating point exception|stack trace'; } \
+    && fail "solid divergence: crashed (exit $rc)"
+msg=$(grep -m1 "FEMDEM solid is diverging at time" $log)
+[ -n "$msg" ] && echo "$msg" | grep -q "node [0-9]* at (.*) moves at .* m/s, above maxNodeSpeed" \
+    || fail "solid divergence: no message naming the time, the node and its speed"
+[ "$(timeDirs solidDiverge)" = "0 " ] || fail "solid divergence: time directories $(timeDirs solidDiverge)"
+echo ">> solid divergence stopped (exit $rc): ${msg:0:160}"
+
 # ------------------------------------------------------------- signals
 # Far more steps than run before the signal, no write time before endTime,
 # a progress line every second

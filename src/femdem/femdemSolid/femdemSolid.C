@@ -305,6 +305,8 @@ Foam::femdemSolid::femdemSolid
     step_(0),
     deltaT_(0),
     safety_(dict.getOrDefault<scalar>("timeStepSafety", 0.5)),
+    maxNodeSpeed_(dict.getOrDefault<scalar>("maxNodeSpeed", 2e4)),
+    maxSpeedSqr_(0),
     trackEnergy_(dict.getOrDefault<bool>("trackEnergy", false)),
     wTri_(0), wDamp_(0), wJoint_(0), wContact_(0), wGravity_(0), wExt_(0),
     energy0_(0),
@@ -314,6 +316,12 @@ Foam::femdemSolid::femdemSolid
     {
         FatalIOErrorInFunction(dict)
             << "entry 'timeStepSafety' must lie in (0, 1], got " << safety_
+            << exit(FatalIOError);
+    }
+    if (!(maxNodeSpeed_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'maxNodeSpeed' must be positive, got " << maxNodeSpeed_
             << exit(FatalIOError);
     }
     if (massDamping_ < 0)
@@ -423,10 +431,15 @@ void Foam::femdemSolid::step(const scalar dt)
     vector2D* v = v_.data();
     const vector2D* f = f_.cdata();
     const scalar* im = invMass_.cdata();
+    scalar maxSpeedSqr = 0;
     for (label i = 0; i < n; ++i)
     {
         v[i] += dt*(im[i]*f[i] + g - alpha*v[i]);
+        const scalar s2 = magSqr(v[i]);
+        // written so that a NaN is taken as the largest
+        maxSpeedSqr = s2 <= maxSpeedSqr ? maxSpeedSqr : s2;
     }
+    maxSpeedSqr_ = maxSpeedSqr;
 
     applyConstraints(dt, tNew);
 
@@ -466,8 +479,30 @@ Foam::label Foam::femdemSolid::advance(const scalar interval)
     for (label i = 0; i < n; ++i)
     {
         step(dt);
+        if (!(maxSpeedSqr_ <= sqr(maxNodeSpeed_)))
+        {
+            reportDivergence();
+        }
     }
     return n;
+}
+
+
+void Foam::femdemSolid::reportDivergence() const
+{
+    label worst = 0;
+    forAll(v_, i)
+    {
+        if (!(magSqr(v_[i]) <= magSqr(v_[worst]))) worst = i;
+    }
+    FatalErrorInFunction
+        << "the FEMDEM solid is diverging at time " << time_ << ": node "
+        << worst << " at " << x_[worst] << " moves at " << mag(v_[worst])
+        << " m/s, above maxNodeSpeed " << maxNodeSpeed_ << " m/s (a crushed"
+        << " or inverted triangle; a smaller timeStepSafety or a finer"
+        << " mesh may help). Stopping without writing this time; the last"
+        << " written time is the last good state."
+        << exit(FatalError);
 }
 
 
