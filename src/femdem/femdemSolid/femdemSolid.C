@@ -305,7 +305,7 @@ Foam::femdemSolid::femdemSolid
     step_(0),
     deltaT_(0),
     safety_(dict.getOrDefault<scalar>("timeStepSafety", 0.5)),
-    maxNodeSpeed_(dict.getOrDefault<scalar>("maxNodeSpeed", 2e4)),
+    maxNodeSpeed_(dict.getOrDefault<scalar>("maxNodeSpeed", 1e5)),
     maxSpeedSqr_(0),
     trackEnergy_(dict.getOrDefault<bool>("trackEnergy", false)),
     wTri_(0), wDamp_(0), wJoint_(0), wContact_(0), wGravity_(0), wExt_(0),
