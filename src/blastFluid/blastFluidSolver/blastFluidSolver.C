@@ -1179,7 +1179,6 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     UsolidPtr_(nullptr),
     minFluidFraction_(0),
     absorptionBeta_(0),
-    solidWork_(0),
     primitivesCurrent_(false)
 {
     readControls();

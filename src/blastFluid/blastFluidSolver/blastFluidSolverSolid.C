@@ -288,7 +288,6 @@ void Foam::blastFluidSolver::absorbSolidVelocity(const scalar dt)
     scalarField& rhoE = rhoE_.primitiveFieldRef();
     const scalarField& V = mesh_.V();
 
-    scalar work = 0;
     forAll(phi, i)
     {
         if (phi[i] <= 0 || alphaS[i] <= 0)
@@ -306,11 +305,20 @@ void Foam::blastFluidSolver::absorbSolidVelocity(const scalar dt)
         const scalar dRhoE = dRhoU & Us[i];
         rhoE[i] += dRhoE;
         solidImpulse_[i] -= phi[i]*V[i]*dRhoU;
-        work += phi[i]*V[i]*dRhoE;
     }
-    solidWork_ += returnReduce(work, sumOp<scalar>());
     primitivesCurrent_ = false;
     primitivesFromConservative(true);
+}
+
+
+void Foam::blastFluidSolver::fluidFractionFromSolid(scalarField& phi) const
+{
+    const scalarField& alphaS = alphaSolidPtr_->primitiveField();
+    forAll(phi, i)
+    {
+        const scalar f = 1 - alphaS[i];
+        phi[i] = f >= minFluidFraction_ ? f : 0;
+    }
 }
 
 
@@ -371,13 +379,7 @@ void Foam::blastFluidSolver::setSolid
                 calculatedFvPatchScalarField::typeName
             )
         );
-        scalarField& phi = fluidFractionPtr_->primitiveFieldRef();
-        const scalarField& alphaS = alphaSolid.primitiveField();
-        forAll(phi, i)
-        {
-            const scalar f = 1 - alphaS[i];
-            phi[i] = f >= minFluidFraction_ ? f : 0;
-        }
+        fluidFractionFromSolid(fluidFractionPtr_->primitiveFieldRef());
     }
     setFaceFluidFraction();
     solidImpulse_.setSize(mesh_.nCells(), Zero);
@@ -400,7 +402,6 @@ void Foam::blastFluidSolver::updateFluidFraction()
     // decomposed run gives the serial answer.
     volScalarField& phiField = fluidFractionPtr_();
     scalarField& phi = phiField.primitiveFieldRef();
-    const scalarField& alphaS = alphaSolidPtr_->primitiveField();
     const scalarField& V = mesh_.V();
     const scalarField& p = p_.primitiveField();
     const label nCells = mesh_.nCells();
@@ -409,11 +410,7 @@ void Foam::blastFluidSolver::updateFluidFraction()
     const scalarField& phiOld = phiOldField.primitiveField();
     const scalarField vOld(phiOld*V);
 
-    forAll(phi, i)
-    {
-        const scalar f = 1 - alphaS[i];
-        phi[i] = f >= minFluidFraction_ ? f : 0;
-    }
+    fluidFractionFromSolid(phi);
     phiField.correctBoundaryConditions();
     scalarField phiNbr, phiOldNbr;
     coupledNeighbourValues(phiField, phiNbr);
@@ -707,8 +704,6 @@ void Foam::blastFluidSolver::updateFluidFraction()
         }
     }
 
-    // Energy given to the gas by the moving solid
-    solidWork_ = returnReduce(sum(c.energy) - sum(rhoE_.primitiveField()*vOld), sumOp<scalar>());
     c.toState(phi);
 
     phiField.correctBoundaryConditions();
