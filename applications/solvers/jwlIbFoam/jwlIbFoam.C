@@ -25,7 +25,8 @@ Description
          solid surface pressure, optional Q-scheme), then the implicit
          absorption towards the solid velocity;
       3. forces on the solid nodes: the momentum the gas gave to the solid
-         (total momentum conserved) and the gas pressure in opened cracks;
+         (total momentum conserved), optionally (crackPressure) the gas
+         pressure in opened sub-cell cracks;
       4. FEMDEM sub-cycled over dt with its own stable step.
     A case without constant/femdemProperties runs as a pure gas solver.
 
