@@ -4,19 +4,13 @@
 #include "solidProjection.H"
 #include "triangleMesh.H"
 #include "Random.H"
-#include <sstream>
-#include <iomanip>
+#include "immersedBodyTestTools.H"
 
 using namespace Foam;
 
 namespace
 {
-    std::string sci(scalar x)
-    {
-        std::ostringstream os;
-        os << std::scientific << std::setprecision(2) << x;
-        return os.str();
-    }
+    using immersedBodyTestTools::sci;
 
     // A grid of nx*ny jittered (still convex) quadrilaterals over [0,1]^2
     std::pair<List<vector2D>, labelList> jitteredGrid(label nx, label ny)

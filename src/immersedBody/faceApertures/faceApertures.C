@@ -1,0 +1,426 @@
+/*---------------------------------------------------------------------------*\
+  jwlIbFoam: blast in fractured solids, built on OpenFOAM v1912
+-------------------------------------------------------------------------------
+License
+    GNU General Public License v3 or later (as OpenFOAM).
+\*---------------------------------------------------------------------------*/
+
+#include "faceApertures.H"
+#include "polygonClipping.H"
+#include "polyMesh.H"
+#include "emptyPolyPatch.H"
+#include <algorithm>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+    using namespace Foam;
+
+    inline scalar cross2(const vector2D& u, const vector2D& v)
+    {
+        return u.x()*v.y() - u.y()*v.x();
+    }
+
+    // Roots of c0 + c1 t + c2 t^2 strictly inside (0, 1), appended to t
+    inline void addRoots
+    (
+        const scalar c0, const scalar c1, const scalar c2,
+        scalar* t, label& n
+    )
+    {
+        const scalar scale = mag(c0) + mag(c1) + mag(c2);
+        if (scale <= 0)
+        {
+            return;
+        }
+        auto add = [&](const scalar r)
+        {
+            if (r > 0 && r < 1) t[n++] = r;
+        };
+        if (mag(c2) <= 1e-12*scale)
+        {
+            if (mag(c1) > 1e-14*scale) add(-c0/c1);
+            return;
+        }
+        const scalar disc = c1*c1 - 4*c2*c0;
+        if (disc < 0)
+        {
+            return;
+        }
+        // Numerically stable form of the two roots
+        const scalar q = -0.5*(c1 + (c1 >= 0 ? 1 : -1)*std::sqrt(disc));
+        add(q/c2);
+        if (q != 0) add(c0/q);
+    }
+}
+
+
+namespace
+{
+    // Adaptive 2-point Gauss of a smooth function on [a, b] ('whole': the
+    // rule on [a, b]), halving until the halves agree to tol per unit length
+    template<class Rule>
+    Foam::scalar adaptiveGauss
+    (
+        const Rule& gauss, const Foam::scalar a, const Foam::scalar b,
+        const Foam::scalar whole, const Foam::scalar tol, const int depth
+    )
+    {
+        const Foam::scalar m = 0.5*(a + b);
+        const Foam::scalar left = gauss(a, m), right = gauss(m, b);
+        const Foam::scalar halves = left + right;
+        if (depth >= 20 || std::abs(halves - whole) <= tol*(b - a))
+        {
+            return halves + (halves - whole)/15;
+        }
+        return adaptiveGauss(gauss, a, m, left, tol, depth + 1)
+             + adaptiveGauss(gauss, m, b, right, tol, depth + 1);
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::faceApertures::collinearSide
+(
+    const vector2D& p0,
+    const vector2D& p1,
+    const FixedList<vector2D, 3>& x0,
+    const FixedList<vector2D, 3>& x1
+)
+{
+    // An edge stays on the line of the face if both its vertices lie on it
+    // at both ends of the step (the distances are linear in tau)
+    const vector2D d = p1 - p0;
+    FixedList<scalar, 3> s0, s1;
+    for (label k = 0; k < 3; ++k)
+    {
+        s0[k] = cross2(d, x0[k] - p0);
+        s1[k] = cross2(d, x1[k] - p0);
+    }
+    for (label k = 0; k < 3; ++k)
+    {
+        const label j = (k + 1) % 3, o = (k + 2) % 3;
+        if (s0[k] == 0 && s0[j] == 0 && s1[k] == 0 && s1[j] == 0)
+        {
+            return s0[o] + s1[o] > 0 ? 1 : -1;
+        }
+    }
+    return 0;
+}
+
+
+Foam::cellBinIndex Foam::faceApertures::makeIndex
+(
+    const UList<vector2D>& start,
+    const UList<vector2D>& end
+)
+{
+    List<vector2D> vertices(2*start.size());
+    labelList polygonStart(start.size() + 1);
+    forAll(start, f)
+    {
+        vertices[2*f] = start[f];
+        vertices[2*f + 1] = end[f];
+        polygonStart[f] = 2*f;
+    }
+    polygonStart[start.size()] = 2*start.size();
+    return cellBinIndex(vertices, polygonStart);
+}
+
+
+Foam::scalar Foam::faceApertures::averageCoveredLength
+(
+    const vector2D& p0,
+    const vector2D& p1,
+    const FixedList<vector2D, 3>& x0,
+    const FixedList<vector2D, 3>& x1
+)
+{
+    // Events: a vertex crosses the line of the face (linear in tau), an end
+    // of the face crosses the line of an edge (quadratic in tau)
+    scalar t[2 + 3 + 3*2*2];
+    label n = 0;
+    t[n++] = 0;
+    const vector2D d = p1 - p0;
+    FixedList<vector2D, 3> dx;
+    for (label k = 0; k < 3; ++k)
+    {
+        dx[k] = x1[k] - x0[k];
+        const scalar s0 = cross2(d, x0[k] - p0);
+        const scalar s1 = cross2(d, x1[k] - p0);
+        if ((s0 < 0) != (s1 < 0) && s0 != s1)
+        {
+            const scalar r = s0/(s0 - s1);
+            if (r > 0 && r < 1) t[n++] = r;
+        }
+    }
+    for (label k = 0; k < 3; ++k)
+    {
+        const label j = (k + 1) % 3;
+        const vector2D e0 = x0[j] - x0[k];
+        const vector2D de = dx[j] - dx[k];
+        for (const vector2D* q : {&p0, &p1})
+        {
+            // (e0 + tau de) x (q - x0_k - tau dx_k)
+            const vector2D r0 = *q - x0[k];
+            addRoots
+            (
+                cross2(e0, r0),
+                cross2(de, r0) - cross2(e0, dx[k]),
+                -cross2(de, dx[k]),
+                t, n
+            );
+        }
+    }
+    t[n++] = 1;
+    std::sort(t, t + n);
+
+    // Between events the covered length is linear for a translation (the
+    // midpoint value is exact) and a smooth rational function otherwise,
+    // which can be steep when the face is nearly parallel to an edge:
+    // adaptive 2-point Gauss with Richardson extrapolation
+    const bool translation =
+        dx[1] == dx[0] && dx[2] == dx[0];
+    auto covered = [&](const scalar tau)
+    {
+        return coveredLength
+        (
+            p0, p1, x0[0] + tau*dx[0], x0[1] + tau*dx[1], x0[2] + tau*dx[2]
+        );
+    };
+    static const scalar g = 0.5/std::sqrt(3.0);
+    auto gauss = [&](const scalar a, const scalar b)
+    {
+        const scalar h = b - a, m = 0.5*(a + b);
+        return 0.5*h*(covered(m - g*h) + covered(m + g*h));
+    };
+    const scalar tol = 1e-13*mag(d);
+
+    scalar integral = 0;
+    for (label i = 0; i + 1 < n; ++i)
+    {
+        const scalar a = t[i], b = t[i + 1];
+        if (b <= a) continue;
+        integral +=
+            translation
+          ? (b - a)*covered(0.5*(a + b))
+          : adaptiveGauss(gauss, a, b, gauss(a, b), tol, 0);
+    }
+    return integral;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::faceApertures::faceApertures
+(
+    const UList<vector2D>& start,
+    const UList<vector2D>& end
+)
+:
+    start_(start),
+    end_(end),
+    length_(start.size()),
+    index_(makeIndex(start, end)),
+    covered_(start.size(), 0),
+    nPairs_(0),
+    onLeft_(start.size(), 0),
+    onRight_(start.size(), 0),
+    lastTriangle_(start.size(), -1)
+{
+    forAll(length_, f)
+    {
+        length_[f] = mag(end_[f] - start_[f]);
+    }
+}
+
+
+namespace
+{
+    // Back segments of the faces of a 2D mesh (length 0 on empty patches)
+    std::pair<Foam::List<Foam::vector2D>, Foam::List<Foam::vector2D>>
+    meshSegments(const Foam::polyMesh& mesh)
+    {
+        using namespace Foam;
+        std::pair<List<vector2D>, List<vector2D>> seg;
+        seg.first.setSize(mesh.nFaces(), Zero);
+        seg.second.setSize(mesh.nFaces(), Zero);
+        boolList onEmpty(mesh.nFaces(), false);
+        for (const polyPatch& pp : mesh.boundaryMesh())
+        {
+            if (isA<emptyPolyPatch>(pp))
+            {
+                SubList<bool>(onEmpty, pp.size(), pp.start()) = true;
+            }
+        }
+        const scalar zMid = 0.5*(mesh.bounds().min().z() + mesh.bounds().max().z());
+        const pointField& pts = mesh.points();
+        for (label facei = 0; facei < mesh.nFaces(); ++facei)
+        {
+            if (onEmpty[facei]) continue;
+            const face& f = mesh.faces()[facei];
+            label k = 0;
+            vector2D ends[2];
+            forAll(f, i)
+            {
+                const point& p = pts[f[i]];
+                if (p.z() < zMid && k < 2)
+                {
+                    ends[k++] = vector2D(p.x(), p.y());
+                }
+            }
+            if (k != 2)
+            {
+                FatalErrorInFunction
+                    << "The immersed body needs a 2D mesh in the x-y plane"
+                    << " (one cell thick): face " << facei << " at "
+                    << mesh.faceCentres()[facei] << " does not have two"
+                    << " points on the back plane" << exit(FatalError);
+            }
+            // Normal (dy, -dx) along the face's area vector
+            const vector& S = mesh.faceAreas()[facei];
+            const vector2D d = ends[1] - ends[0];
+            if (d.y()*S.x() - d.x()*S.y() < 0)
+            {
+                std::swap(ends[0], ends[1]);
+            }
+            seg.first[facei] = ends[0];
+            seg.second[facei] = ends[1];
+        }
+        return seg;
+    }
+}
+
+
+Foam::faceApertures::faceApertures(const polyMesh& mesh)
+:
+    faceApertures(meshSegments(mesh))
+{}
+
+
+Foam::faceApertures::faceApertures
+(
+    const std::pair<List<vector2D>, List<vector2D>>& segments
+)
+:
+    faceApertures(segments.first, segments.second)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::faceApertures::coveredLength
+(
+    const vector2D& p0,
+    const vector2D& p1,
+    const vector2D& a,
+    const vector2D& b,
+    const vector2D& c
+)
+{
+    // Parametric clipping of p0 + t (p1 - p0), t in [0, 1], by the three
+    // half-planes of the counter-clockwise triangle
+    const bool ccw = polygonClipping::cross(a, b, c) >= 0;
+    const vector2D* v[3] = {&a, ccw ? &b : &c, ccw ? &c : &b};
+    const vector2D d = p1 - p0;
+    scalar lo = 0, hi = 1;
+    for (label k = 0; k < 3 && lo < hi; ++k)
+    {
+        const vector2D& u = *v[k];
+        const vector2D& w = *v[(k + 1) % 3];
+        // Inside: cross(u, w, x) >= 0, linear in t along the segment
+        const scalar f0 = polygonClipping::cross(u, w, p0);
+        const scalar df = cross2(w - u, d);
+        if (df == 0)
+        {
+            if (f0 < 0) return 0;
+        }
+        else if (df > 0)
+        {
+            lo = max(lo, -f0/df);
+        }
+        else
+        {
+            hi = min(hi, -f0/df);
+        }
+    }
+    return hi > lo ? (hi - lo)*mag(d) : 0;
+}
+
+
+void Foam::faceApertures::update
+(
+    const UList<vector2D>& points0,
+    const UList<vector2D>& points1,
+    const UList<FixedList<label, 3>>& triangles
+)
+{
+    const bool moving = &points0 != &points1;
+    covered_ = 0;
+    nPairs_ = 0;
+    onLeft_ = 0;
+    onRight_ = 0;
+    lastTriangle_ = -1;
+
+    forAll(triangles, t)
+    {
+        const FixedList<label, 3>& tri = triangles[t];
+        FixedList<vector2D, 3> x0, x1;
+        vector2D lo(GREAT, GREAT), hi(-GREAT, -GREAT);
+        for (label k = 0; k < 3; ++k)
+        {
+            x0[k] = points0[tri[k]];
+            x1[k] = points1[tri[k]];
+            lo = min(lo, min(x0[k], x1[k]));
+            hi = max(hi, max(x0[k], x1[k]));
+        }
+
+        index_.forEachCandidate
+        (
+            lo, hi,
+            [&](const label f)
+            {
+                if (lastTriangle_[f] == t || length_[f] <= 0)
+                {
+                    return;
+                }
+                lastTriangle_[f] = t;
+                const vector2D& p0 = start_[f];
+                const vector2D& p1 = end_[f];
+                // Face and swept triangle boxes apart: nothing covered
+                if
+                (
+                    max(p0.x(), p1.x()) < lo.x() || min(p0.x(), p1.x()) > hi.x()
+                 || max(p0.y(), p1.y()) < lo.y() || min(p0.y(), p1.y()) > hi.y()
+                )
+                {
+                    return;
+                }
+                ++nPairs_;
+                const scalar c =
+                    moving
+                  ? averageCoveredLength(p0, p1, x0, x1)
+                  : coveredLength(p0, p1, x0[0], x0[1], x0[2]);
+                if (c <= 0) return;
+                // A face along an edge shared by two triangles would be
+                // counted twice: such parts are counted per side, once
+                const label side = collinearSide(p0, p1, x0, x1);
+                if (side == 0) covered_[f] += c;
+                else if (side > 0) onLeft_[f] += c;
+                else onRight_[f] += c;
+            }
+        );
+    }
+
+    // Overlapping triangles (contact) could count a part twice
+    forAll(covered_, f)
+    {
+        covered_[f] =
+            min(covered_[f] + max(onLeft_[f], onRight_[f]), length_[f]);
+    }
+}
+
+
+// ************************************************************************* //

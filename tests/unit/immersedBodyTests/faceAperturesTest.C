@@ -1,0 +1,304 @@
+// Time-averaged face apertures of a moving solid: exact covered lengths,
+// the geometric conservation law for translations (every cell's swept gas
+// area equals minus the open face vectors dotted with the displacement),
+// and the event-based time integration against fine sampling
+#include <gtest/gtest.h>
+#include "faceApertures.H"
+#include "solidProjection.H"
+#include "triangleMesh.H"
+#include "Random.H"
+#include "clockValue.H"
+#include <map>
+#include "immersedBodyTestTools.H"
+
+using namespace Foam;
+
+namespace
+{
+    using immersedBodyTestTools::sci;
+
+    // Jittered quadrilateral grid over [0,1]^2: cell polygons (CSR) and the
+    // faces (segments oriented counter-clockwise for their first cell, the
+    // owner) with owner and neighbour (-1 on the boundary)
+    struct grid
+    {
+        std::pair<List<vector2D>, labelList> cells;
+        List<vector2D> start, end;
+        labelList owner, neighbour;
+    };
+
+    grid jitteredGrid(label nx, label ny, scalar jitter = 0.2, scalar extent = 1)
+    {
+        Random rnd(4321);
+        List<vector2D> nodes((nx + 1)*(ny + 1));
+        for (label j = 0; j <= ny; ++j)
+        {
+            for (label i = 0; i <= nx; ++i)
+            {
+                vector2D p(extent*i/nx, extent*j/ny);
+                if (i > 0 && i < nx && j > 0 && j < ny)
+                {
+                    p += extent*jitter*vector2D(rnd.sample01<scalar>() - 0.5,
+                                         rnd.sample01<scalar>() - 0.5)/nx;
+                }
+                nodes[j*(nx + 1) + i] = p;
+            }
+        }
+        grid g;
+        g.cells.first.setSize(4*nx*ny);
+        g.cells.second.setSize(nx*ny + 1);
+        std::map<std::pair<label, label>, label> faceOf;
+        DynamicList<vector2D> s, e;
+        DynamicList<label> own, nei;
+        label k = 0;
+        for (label j = 0; j < ny; ++j)
+        {
+            for (label i = 0; i < nx; ++i)
+            {
+                const label c = j*nx + i;
+                const label n[4] =
+                {
+                    j*(nx + 1) + i, j*(nx + 1) + i + 1,
+                    (j + 1)*(nx + 1) + i + 1, (j + 1)*(nx + 1) + i
+                };
+                g.cells.second[c] = k;
+                for (label v = 0; v < 4; ++v)
+                {
+                    g.cells.first[k++] = nodes[n[v]];
+                    const label a = n[v], b = n[(v + 1) % 4];
+                    const auto key = std::make_pair(min(a, b), max(a, b));
+                    auto it = faceOf.find(key);
+                    if (it == faceOf.end())
+                    {
+                        faceOf[key] = s.size();
+                        s.append(nodes[a]);
+                        e.append(nodes[b]);
+                        own.append(c);
+                        nei.append(-1);
+                    }
+                    else
+                    {
+                        nei[it->second] = c;
+                    }
+                }
+            }
+        }
+        g.cells.second[nx*ny] = k;
+        g.start.transfer(s);
+        g.end.transfer(e);
+        g.owner.transfer(own);
+        g.neighbour.transfer(nei);
+        return g;
+    }
+
+    List<vector2D> rigidMotion
+    (
+        const UList<vector2D>& pts, const scalar angle, const vector2D& centre,
+        const vector2D& shift
+    )
+    {
+        List<vector2D> out(pts.size());
+        const scalar c = Foam::cos(angle), s = Foam::sin(angle);
+        forAll(pts, i)
+        {
+            const vector2D r = pts[i] - centre;
+            out[i] = centre + shift + vector2D(c*r.x() - s*r.y(), s*r.x() + c*r.y());
+        }
+        return out;
+    }
+
+    // Gas area per cell: cell area minus the projected solid area
+    scalarField gasArea
+    (
+        solidProjection& proj, const UList<vector2D>& pts,
+        const UList<FixedList<label, 3>>& tris
+    )
+    {
+        scalarField alpha;
+        List<vector2D> Us;
+        proj.project(pts, tris, List<vector2D>(pts.size(), Zero), alpha, Us);
+        return (1 - alpha)*proj.cellArea();
+    }
+}
+
+
+TEST(faceApertures, coveredLengthOfASegmentInATriangle)
+{
+    // Triangle (0,0) (2,0) (0,2): the segment y = 0.5 from x = -1 to 3 is
+    // inside for x in [0, 1.5]; either orientation of the triangle
+    const vector2D a(0, 0), b(2, 0), c(0, 2);
+    const scalar l1 = faceApertures::coveredLength({-1, 0.5}, {3, 0.5}, a, b, c);
+    const scalar l2 = faceApertures::coveredLength({3, 0.5}, {-1, 0.5}, a, c, b);
+    const scalar l3 = faceApertures::coveredLength({-1, 3}, {3, 3}, a, b, c);
+    RecordProperty("covered", sci(l1));
+    EXPECT_NEAR(l1, 1.5, 1e-15);
+    EXPECT_NEAR(l2, 1.5, 1e-15);
+    EXPECT_EQ(l3, 0);
+}
+
+
+TEST(faceApertures, axisAlignedBlockOnACartesianGrid)
+{
+    // Block [0.23, 0.61] x [0.305, 0.695] on a 10 x 10 grid: a vertical face
+    // at x = 0.3 is covered over its part of [0.305, 0.695]
+    const grid g = jitteredGrid(10, 10, 0);
+    faceApertures ap(g.start, g.end);
+    const triangleMesh block = triangleMesh::rectangle
+    (
+        vector2D(0.23, 0.305), vector2D(0.38, 0.39), 3, 4
+    );
+    ap.update(block.points(), block.points(), block.triangles());
+    scalar worst = 0;
+    forAll(g.start, f)
+    {
+        const vector2D& s = g.start[f];
+        const vector2D& e = g.end[f];
+        scalar exact = 0;
+        if (s.x() == e.x() && s.x() > 0.23 && s.x() < 0.61)
+        {
+            exact = max(0.0, min(0.695, max(s.y(), e.y())) - max(0.305, min(s.y(), e.y())));
+        }
+        else if (s.y() == e.y() && s.y() > 0.305 && s.y() < 0.695)
+        {
+            exact = max(0.0, min(0.61, max(s.x(), e.x())) - max(0.23, min(s.x(), e.x())));
+        }
+        worst = max(worst, mag(ap.covered()[f] - exact));
+    }
+    RecordProperty("maxCoveredError", sci(worst));
+    EXPECT_LT(worst, 1e-14);
+}
+
+
+TEST(faceApertures, translationSatisfiesTheGeometricConservationLaw)
+{
+    // A rotated triangulated block translated by d over one step: for every
+    // cell, gasArea(x1) - gasArea(x0) = -sum_f sigma_f a_f L_f n_f . d with
+    // the time-averaged apertures a_f (vertices cross face lines in the step)
+    const grid g = jitteredGrid(37, 29);
+    faceApertures ap(g.start, g.end);
+    solidProjection proj(g.cells);
+    const triangleMesh block = triangleMesh::rectangle
+    (
+        vector2D(0.3, 0.35), vector2D(0.4, 0.25), 13, 9
+    );
+    scalar worst = 0, maxSwept = 0;
+    label nSteps = 0;
+    Random rnd(7);
+    for (const scalar angle : {0.0, 0.4, 0.5236, -1.1})
+    {
+        const List<vector2D> x0 =
+            rigidMotion(block.points(), angle, vector2D(0.5, 0.475), Zero);
+        for (label trial = 0; trial < 5; ++trial)
+        {
+            // Up to 0.8 cells, any direction
+            const vector2D d =
+                0.8/37*vector2D(rnd.sample01<scalar>() - 0.5, rnd.sample01<scalar>() - 0.5);
+            List<vector2D> x1(x0);
+            for (vector2D& p : x1) p += d;
+
+            ap.update(x0, x1, block.triangles());
+            const scalarField dA
+            (
+                gasArea(proj, x1, block.triangles())
+              - gasArea(proj, x0, block.triangles())
+            );
+            scalarField flux(dA.size(), 0);
+            forAll(g.start, f)
+            {
+                const vector2D t = g.end[f] - g.start[f];
+                const vector2D nL(t.y(), -t.x());
+                const scalar q = ap.aperture(f)*(nL & d);
+                flux[g.owner[f]] -= q;
+                if (g.neighbour[f] >= 0) flux[g.neighbour[f]] += q;
+            }
+            forAll(dA, c)
+            {
+                worst = max(worst, mag(dA[c] - flux[c]));
+                maxSwept = max(maxSwept, mag(dA[c]));
+            }
+            ++nSteps;
+        }
+    }
+    const scalar cellArea = 1.0/(37*29);
+    RecordProperty("steps", nSteps);
+    RecordProperty("maxSweptOverCellArea", sci(maxSwept/cellArea));
+    RecordProperty("maxGclErrorOverCellArea", sci(worst/cellArea));
+    EXPECT_GT(maxSwept/cellArea, 0.1);
+    EXPECT_LT(worst/cellArea, 1e-12);
+}
+
+
+TEST(faceApertures, eventIntegrationOfADeformingTriangle)
+{
+    // Vertices on straight lines of different speeds (rotation and
+    // stretching) against a 200000-point midpoint rule: a step of a few per
+    // cent of the triangle size (as in a coupled step) and a huge one
+    const List<vector2D> x0({{0.1, 0.1}, {0.9, 0.2}, {0.3, 0.8}});
+    const List<vector2D> big({{0.3, -0.2}, {0.7, 0.9}, {-0.2, 0.5}});
+    const List<FixedList<label, 3>> tri({FixedList<label, 3>({0, 1, 2})});
+    const List<vector2D> s({{-0.5, 0.4}, {0.45, -0.5}, {0.0, 0.0}, {0.1, 0.12}});
+    const List<vector2D> e({{1.5, 0.45}, {0.5, 1.5}, {0.6, 0.6}, {0.9, 0.19}});
+    faceApertures ap(s, e);
+    scalarField worst(2, 0);
+    for (const label k : {0, 1})
+    {
+        List<vector2D> x1(3);
+        forAll(x1, i)
+        {
+            x1[i] = x0[i] + (k == 0 ? 0.05 : 1.0)*(big[i] - x0[i]);
+        }
+        ap.update(x0, x1, tri);
+        const label n = 200000;
+        forAll(s, f)
+        {
+            scalar sum = 0;
+            for (label i = 0; i < n; ++i)
+            {
+                const scalar tau = (i + 0.5)/n;
+                sum += faceApertures::coveredLength
+                (
+                    s[f], e[f],
+                    x0[0] + tau*(x1[0] - x0[0]), x0[1] + tau*(x1[1] - x0[1]),
+                    x0[2] + tau*(x1[2] - x0[2])
+                );
+            }
+            worst[k] = max(worst[k], mag(ap.covered()[f] - sum/n)/ap.length()[f]);
+        }
+    }
+    RecordProperty("maxRelativeErrorSmallStep", sci(worst[0]));
+    RecordProperty("maxRelativeErrorHugeStep", sci(worst[1]));
+    EXPECT_LT(worst[0], 1e-9);
+    EXPECT_LT(worst[1], 1e-3);
+}
+
+
+TEST(faceApertures, costFollowsTheSolidNotTheMesh)
+{
+    // The same block and cell size on a 100x100 grid over [0, 1]^2 and a
+    // 400x400 grid over [0, 4]^2 (16x the faces): the face-triangle pairs
+    // clipped (the work) stay about the same
+    const triangleMesh block = triangleMesh::rectangle
+    (
+        vector2D(0.3, 0.35), vector2D(0.2, 0.15), 20, 15
+    );
+    const List<vector2D> x0 = rigidMotion(block.points(), 0.3, vector2D(0.4, 0.42), Zero);
+    const List<vector2D> x1 = rigidMotion(block.points(), 0.3, vector2D(0.4, 0.42), vector2D(1e-3, 5e-4));
+    labelList pairs(2);
+    scalarField seconds(2);
+    label k = 0;
+    for (const label n : {100, 400})
+    {
+        const grid g = jitteredGrid(n, n, 0.2, n/100);
+        faceApertures ap(g.start, g.end);
+        const clockValue t0(clockValue::now());
+        ap.update(x0, x1, block.triangles());
+        seconds[k] = t0.elapsed();
+        pairs[k++] = ap.nPairs();
+    }
+    RecordProperty("triangles", block.nTriangles());
+    RecordProperty("pairs100", pairs[0]);
+    RecordProperty("pairs400", pairs[1]);
+    RecordProperty("seconds100", sci(seconds[0]));
+    RecordProperty("seconds400", sci(seconds[1]));
+    EXPECT_LT(scalar(pairs[1]), 1.2*pairs[0]);
+}
