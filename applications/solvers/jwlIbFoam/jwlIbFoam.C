@@ -73,7 +73,17 @@ void checkSolidInsideFluid
     const femdemSolid& solid
 )
 {
-    const scalar solidArea = sum(solid.area0());
+    // The area of the solid as it is now (deformed, after a restart without
+    // alpha.solid), not the initial area0: the projection clips the present
+    // triangles, so only the part outside the fluid mesh makes them differ
+    const List<vector2D>& x = solid.x();
+    scalar solidArea = 0;
+    for (label t = 0; t < solid.nTriangles(); ++t)
+    {
+        const vector2D a = x[3*t + 1] - x[3*t];
+        const vector2D b = x[3*t + 2] - x[3*t];
+        solidArea += 0.5*(a.x()*b.y() - a.y()*b.x());
+    }
     const scalar projected =
         gSum(coupling.alphaSolid().primitiveField()*mesh.V())
        /coupling.depth();
