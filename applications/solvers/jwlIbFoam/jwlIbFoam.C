@@ -87,13 +87,20 @@ void checkSolidInsideFluid
     const scalar projected =
         gSum(coupling.alphaSolid().primitiveField()*mesh.V())
        /coupling.depth();
-    if (mag(projected - solidArea) > 1e-9*solidArea)
+    // Tolerance 1e-5: besides round-off, the discontinuous FEMDEM triangles
+    // of a deformed (restarted) solid overlap slightly at compressed joints,
+    // and the projection counts such overlaps once (2.8e-8 of the area in
+    // the coupled box restarted after two steps); a solid that leaves the
+    // fluid mesh loses far more
+    if (mag(projected - solidArea) > 1e-5*solidArea)
     {
         FatalErrorInFunction
             << "constant/solidMesh: "
             << 100*(solidArea - projected)/solidArea << " % of the solid"
-            << " area lies outside the fluid mesh (fluid mesh bounds "
-            << mesh.bounds() << ")" << exit(FatalError);
+            << " area lies outside the fluid mesh (solid area " << solidArea
+            << ", projected onto the fluid cells " << projected
+            << "; fluid mesh bounds " << mesh.bounds() << ")"
+            << exit(FatalError);
     }
 }
 
