@@ -34,35 +34,26 @@ cells() { for d in processor*; do head -20 "$d/constant/polyMesh/owner" | grep -
 decomposePar -force > log.decomposePar.simple 2>&1
 simpleCut=$(cutFaces)
 
-{ header decomposeParDict; echo 'numberOfSubdomains 3; method metis;'; } > system/decomposeParDict
-decomposePar -force > log.decomposePar.metis 2>&1 || { tail -20 log.decomposePar.metis; exit 1; }
-metisCut=$(cutFaces)
-read -r -d '' -a counts < <(cells) || true
-/usr/bin/python3 - "$simpleCut" "$metisCut" "${counts[@]}" <<'PY'
+balanced() {  # method imbalance-tolerance: decompose in 3 and judge
+    { header decomposeParDict; echo "numberOfSubdomains 3; method $1;"; } > system/decomposeParDict
+    decomposePar -force > "log.decomposePar.$1" 2>&1 \
+        || { tail -20 "log.decomposePar.$1"; echo ">> decomposePar with method $1 failed  <-- FAIL"; return 1; }
+    local cut counts
+    cut=$(cutFaces)
+    read -r -d '' -a counts < <(cells) || true
+    /usr/bin/python3 - "$1" "$2" "$simpleCut" "$cut" "${counts[@]}" <<'PY'
 import sys
-simple, metis = int(sys.argv[1]), int(sys.argv[2])
-cells = [int(c) for c in sys.argv[3:]]
+method, tol, simple, cut = sys.argv[1], float(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+cells = [int(c) for c in sys.argv[5:]]
 imbalance = max(cells) / (sum(cells) / len(cells)) - 1
-print(f">> metis: cells per rank {cells}, imbalance {imbalance:.3%} (tolerance 2%)")
-print(f">> cut faces: metis {metis}, simple {simple} (tolerance 1.3x simple)")
-ok = len(cells) == 3 and sum(cells) == 2400 and imbalance <= 0.02 and 0 < metis <= 1.3 * simple
-sys.exit(0 if ok else 1)
+print(f">> {method}: cells per rank {cells}, imbalance {imbalance:.3%} (tolerance {tol:.0%})")
+print(f">> cut faces: {method} {cut}, simple {simple} (tolerance 1.3x simple)")
+sys.exit(0 if len(cells) == 3 and sum(cells) == 2400 and imbalance <= tol and 0 < cut <= 1.3 * simple else 1)
 PY
-
+}
+balanced metis 0.02
 # scotch: the project's libscotchDecomp (Debian's is a stub as for METIS)
-{ header decomposeParDict; echo 'numberOfSubdomains 3; method scotch;'; } > system/decomposeParDict
-decomposePar -force > log.decomposePar.scotch 2>&1 || { tail -20 log.decomposePar.scotch; echo ">> decomposePar with method scotch failed  <-- FAIL"; exit 1; }
-scotchCut=$(cutFaces)
-read -r -d '' -a counts < <(cells) || true
-/usr/bin/python3 - "$simpleCut" "$scotchCut" "${counts[@]}" <<'PY'
-import sys
-simple, cut = int(sys.argv[1]), int(sys.argv[2])
-cells = [int(c) for c in sys.argv[3:]]
-imbalance = max(cells) / (sum(cells) / len(cells)) - 1
-print(f">> scotch: cells per rank {cells}, imbalance {imbalance:.3%} (tolerance 5%)")
-print(f">> cut faces: scotch {cut}, simple {simple} (tolerance 1.3x simple)")
-sys.exit(0 if len(cells) == 3 and sum(cells) == 2400 and imbalance <= 0.05 and 0 < cut <= 1.3 * simple else 1)
-PY
+balanced scotch 0.05
 
 # A coupled case (the closed box with its free disc, 20x20 cells, 38
 # triangles, 4 steps) decomposed with scotch and with metis on 2 ranks
