@@ -424,5 +424,112 @@ prep gmshQuad square
 sed -i 's/^6$/7/; s/^\$EndElements/7 3 2 2 1 1 2 3 4\n$EndElements/' square.msh
 check gmshQuad "square.msh" "element 7" gmshToFemdem square.msh
 
+
+# --- issue 17: restarts, empty or inconsistent dictionaries, sizes
+prep restartMissingFemdemState boxRestart
+rm 4e-06/uniform/femdemState
+check restartMissingFemdemState "4e-06/uniform/femdemState" "missing" jwlIbFoam
+
+prep femdemRestartMissingState barRun
+sed -i 's/endTime 4e-6;/endTime 8e-6;/' system/controlDict
+rm 4e-06/femdemState
+check femdemRestartMissingState "4e-06/femdemState" "missing" femdemFoam
+
+prep emptyFemdemProperties box
+header femdemProperties > constant/femdemProperties
+check emptyFemdemProperties femdemProperties "'materials'" jwlIbFoam
+
+prep zeroByteFemdemProperties box
+: > constant/femdemProperties
+check zeroByteFemdemProperties femdemProperties "empty" jwlIbFoam
+
+prep femdemMeshNoTriangles bar
+sed -i 's/^solids/holes { all { type rectangle; min (-0.01 -0.01); max (0.04 0.03); } }\nsolids/' system/femdemMeshDict
+check femdemMeshNoTriangles femdemMeshDict "'holes'" femdemMesh
+
+zeroTriangles='s/^triangles\s+\d+\s*\(.*$/triangles 0 ();/; s/^triangleMaterials\s+\d+\s*\{.*$/triangleMaterials 0 ();/'
+prep solidMeshNoTriangles barRun
+perl -pi -e "$zeroTriangles" constant/solidMesh
+check solidMeshNoTriangles solidMesh "'triangles'" femdemFoam
+
+prep meshCheckNoTriangles barRun
+perl -pi -e "$zeroTriangles" constant/solidMesh
+check meshCheckNoTriangles solidMesh "'triangles'" femdemMeshCheck
+
+for tol in -1 0 NaN; do
+    prep "meshCheckMergeTol$tol" barRun
+    check "meshCheckMergeTol$tol" "-mergeTol" "(0, 1)" femdemMeshCheck -mergeTol "$tol"
+done
+
+prep femdemWriteIntervalZero barRun
+sed -i 's/writeInterval 2e-6;/writeInterval 0;/' system/controlDict
+check femdemWriteIntervalZero controlDict "'writeInterval'" femdemFoam
+
+prep writeIntervalNegative sod
+setEntry system/controlDict writeInterval -0.01
+check writeIntervalNegative controlDict "'writeInterval'" jwlIbFoam
+
+prep femdemWriteIntervalNegative barRun
+sed -i 's/writeInterval 2e-6;/writeInterval -2e-6;/' system/controlDict
+check femdemWriteIntervalNegative controlDict "'writeInterval'" femdemFoam
+
+prep femdemMeshTooManyTriangles bar
+setEntry system/femdemMeshDict targetSize 1e-6
+check femdemMeshTooManyTriangles femdemMeshDict "'targetSize'" femdemMesh
+
+prep femdemPropertiesMaterialTwice bar
+sed -i 's/^materials { rock {/materials { rock { E 1e9; } rock {/' constant/femdemProperties
+check femdemPropertiesMaterialTwice femdemProperties "duplicate entry: rock" femdemFoam
+
+prep thermoMaterialTwice sod
+echo 'air { equationOfState idealGas; gamma 1.3; Cv 718; }' >> constant/thermophysicalProperties
+check thermoMaterialTwice thermophysicalProperties "duplicate entry: air" jwlIbFoam
+
+prep thermoMaterialsListedTwice tntCharged
+sed -i 's/^materials (products air);/materials (air air);/' constant/thermophysicalProperties
+check thermoMaterialsListedTwice thermophysicalProperties "'materials'" jwlIbFoam
+
+prep solidMeshMaterialsListedTwice barRun
+perl -pi -e 's/^materials\s+1\s*\(\s*rock\s*\)\s*;/materials 2 ( rock rock );/' constant/solidMesh
+check solidMeshMaterialsListedTwice solidMesh "'materials'" femdemFoam
+
+prep endTimeBeforeStartTime restart
+setEntry system/controlDict endTime 0.01
+check endTimeBeforeStartTime controlDict "'endTime'" jwlIbFoam
+
+prep femdemEndTimeBeforeStartTime bar
+sed -i 's/endTime 4e-6;/endTime -1;/' system/controlDict
+check femdemEndTimeBeforeStartTime controlDict "'endTime'" femdemFoam
+
+prep mpirunWithoutParallel sod
+check mpirunWithoutParallel "-parallel" "MPI launcher" mpirun -np 2 jwlIbFoam
+
+prep renumberBlockSizeZero barRun
+check renumberBlockSizeZero "-blockSize" "0" femdemRenumber -blockSize 0
+
+prep femdemMeshSelfCrossingPolygon bar
+sed -i 's/type rectangle; min (0 0); max (0.03 0.02);/type polygon; points ((0 0) (0.03 0.02) (0.03 0) (0 0.02));/' system/femdemMeshDict
+check femdemMeshSelfCrossingPolygon femdemMeshDict "'points'" femdemMesh
+
+femdemCase negativeRampTime 's/type velocity; value (3 0.5);/type velocity; value (3 0.5); rampTime -1e-6;/' "'rampTime'"
+
+prep gmshNoPhysicalGroups square
+perl -0pi -e 's/\$PhysicalNames.*?\$EndPhysicalNames\n//s; s/^(\d+) (\d) 2 \d+ \d+ /$1 $2 2 0 1 /mg' square.msh
+check gmshNoPhysicalGroups "square.msh" "physical surface" gmshToFemdem square.msh
+
+prep gmshDuplicateNodeId square
+sed -i 's/^4 0 1 0$/3 0 1 0/' square.msh
+check gmshDuplicateNodeId "square.msh" "duplicate node id 3" gmshToFemdem square.msh
+
+prep deltaTZero sod
+setEntry system/controlDict deltaT 0
+check deltaTZero "system/controlDict" "'deltaT'" jwlIbFoam
+
+mkdir -p "$top/cases/with space"
+prep casePathWithSpace bar
+cd "$top" && rm -rf "cases/with space/bar" && mv cases/casePathWithSpace "cases/with space/bar"
+mkdir -p cases/casePathWithSpace && cd "cases/with space/bar"
+check casePathWithSpace "with space" "contains a space" femdemFoam
+
 echo ">> $nCases cases, $nFailed failed"
 [ $nFailed = 0 ]

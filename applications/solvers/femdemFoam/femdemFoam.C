@@ -60,6 +60,7 @@ Description
 #include "femdemOutput.H"
 #include "stopOnSignal.H"
 #include "runProgress.H"
+#include "caseChecks.H"
 #include <cmath>
 
 using namespace Foam;
@@ -78,8 +79,16 @@ int main(int argc, char *argv[])
     );
     argList::noParallel();
 
+    caseChecks::checkCasePath(argc, argv);
     #include "setRootCase.H"
+
+    // Before Time reads system/controlDict: mpirun without -parallel, deltaT/writeInterval/endTime that Time would trap
+    // on (writeInterval 0) or accept and then do nothing
+    caseChecks::checkLaunch(args);
+    caseChecks::checkControlDict(args);
+
     #include "createTime.H"
+    caseChecks::checkStartTime(runTime);
 
     IOdictionary properties
     (
@@ -92,6 +101,13 @@ int main(int argc, char *argv[])
             IOobject::NO_WRITE
         )
     );
+    if (properties.empty())
+    {
+        FatalIOErrorInFunction(properties)
+            << "constant/femdemProperties is empty: it needs at least the"
+            << " entry 'materials'" << exit(FatalIOError);
+    }
+    caseChecks::checkNoDuplicateEntries(properties);
     dictionary solidDict(properties);
     if (!solidDict.found("trackEnergy"))
     {
@@ -147,8 +163,22 @@ int main(int argc, char *argv[])
         }
     }
 
-    // Restart from the state of the start time, if written
+    // Restart from the state of the start time. femdemFoam reads nothing
+    // else from time directories, so a start time directory other than 0
+    // was written by an earlier run: it must hold the solid's state (else
+    // the solid would silently restart from the mesh at rest)
     const fileName stateFile = runTime.timePath()/"femdemState";
+    const bool restart =
+        isDir(runTime.timePath()) && runTime.timeName() != "0";
+    if (restart && !isFile(stateFile))
+    {
+        FatalErrorInFunction
+            << "restart from time " << runTime.timeName() << ": the solid"
+            << " state " << stateFile << " is missing (the time directory"
+            << " exists, so an earlier run wrote it). Restore the file, remove"
+            << " the time directory, or set startFrom/startTime to a time"
+            << " with a femdemState" << exit(FatalError);
+    }
     if (readState(solid, stateFile))
     {
         Info<< "Restarted from " << stateFile << " (solid time "

@@ -73,17 +73,34 @@ void checkSolidInsideFluid
     const femdemSolid& solid
 )
 {
-    const scalar solidArea = sum(solid.area0());
+    // The area of the solid as it is now (deformed, after a restart without
+    // alpha.solid), not the initial area0: the projection clips the present
+    // triangles, so only the part outside the fluid mesh makes them differ
+    const List<vector2D>& x = solid.x();
+    scalar solidArea = 0;
+    for (label t = 0; t < solid.nTriangles(); ++t)
+    {
+        const vector2D a = x[3*t + 1] - x[3*t];
+        const vector2D b = x[3*t + 2] - x[3*t];
+        solidArea += 0.5*(a.x()*b.y() - a.y()*b.x());
+    }
     const scalar projected =
         gSum(coupling.alphaSolid().primitiveField()*mesh.V())
        /coupling.depth();
-    if (mag(projected - solidArea) > 1e-9*solidArea)
+    // Tolerance 1e-5: besides round-off, the discontinuous FEMDEM triangles
+    // of a deformed (restarted) solid overlap slightly at compressed joints,
+    // and the projection counts such overlaps once (2.8e-8 of the area in
+    // the coupled box restarted after two steps); a solid that leaves the
+    // fluid mesh loses far more
+    if (mag(projected - solidArea) > 1e-5*solidArea)
     {
         FatalErrorInFunction
             << "constant/solidMesh: "
             << 100*(solidArea - projected)/solidArea << " % of the solid"
-            << " area lies outside the fluid mesh (fluid mesh bounds "
-            << mesh.bounds() << ")" << exit(FatalError);
+            << " area lies outside the fluid mesh (solid area " << solidArea
+            << ", projected onto the fluid cells " << projected
+            << "; fluid mesh bounds " << mesh.bounds() << ")"
+            << exit(FatalError);
     }
 }
 

@@ -46,10 +46,15 @@ Description
     the patch 'walls'.
 
 Usage
-    femdemMesh [-case dir] [-dict file] [-renumber] [-vtk]
+    femdemMesh [-case dir] [-dict file] [-renumber] [-vtk] [-maxTriangles n]
 
     -renumber   METIS renumbering of triangles and points (blocks of 32)
     -vtk        also write VTK/solidMesh_0.vtu (materials, quality)
+    -maxTriangles  stop before meshing when the solids' area over the area
+                of a triangle of edge targetSize exceeds it (default 2e7)
+
+    A self-crossing polygon and a mesh without triangles (holes covering
+    the solids) are FatalIOErrors naming the entry.
 
 \*---------------------------------------------------------------------------*/
 
@@ -226,6 +231,53 @@ shape readShape
             << exit(FatalIOError);
     }
 
+    // A self-crossing outline has no well-defined inside (CGAL meshes only
+    // part of it): two sides that are not neighbours must not touch
+    if (type == "polygon")
+    {
+        const List<vector2D>& P = s.points;
+        const label n = P.size();
+        auto cross = [](const vector2D& a, const vector2D& b)
+        {
+            return a.x()*b.y() - a.y()*b.x();
+        };
+        for (label i = 0; i < n; ++i)
+        {
+            const vector2D& a = P[i];
+            const vector2D& b = P[(i + 1) % n];
+            for (label j = i + 1; j < n; ++j)
+            {
+                if (j == i + 1 || (i == 0 && j == n - 1))
+                {
+                    continue;   // neighbouring sides share a point
+                }
+                const vector2D& c = P[j];
+                const vector2D& d = P[(j + 1) % n];
+                const scalar d1 = cross(b - a, c - a);
+                const scalar d2 = cross(b - a, d - a);
+                const scalar d3 = cross(d - c, a - c);
+                const scalar d4 = cross(d - c, b - c);
+                bool meet = d1*d2 <= 0 && d3*d4 <= 0;
+                if (d1 == 0 && d2 == 0)
+                {
+                    // Collinear sides meet only if their spans overlap
+                    const vector2D t = b - a;
+                    const scalar sc = (c - a) & t, sd = (d - a) & t;
+                    meet = max(sc, sd) >= 0 && min(sc, sd) <= (t & t);
+                }
+                if (meet)
+                {
+                    FatalIOErrorInFunction(dict)
+                        << "polygon " << s.name << ", entry 'points': side "
+                        << i << " " << a << "-" << b << " crosses or touches"
+                        << " side " << j << " " << c << "-" << d
+                        << ": the outline must not cross itself"
+                        << exit(FatalIOError);
+                }
+            }
+        }
+    }
+
     // Patches: one name for all sides, or a name per side
     s.sidePatch.setSize(s.points.size());
     if (dict.found("patches") && type != "circle")
@@ -270,8 +322,20 @@ int main(int argc, char *argv[])
     argList::addOption("dict", "file", "Alternative femdemMeshDict");
     argList::addBoolOption("renumber", "METIS renumbering for locality");
     argList::addBoolOption("vtk", "Also write VTK/solidMesh_0.vtu");
+    argList::addOption
+    (
+        "maxTriangles", "n",
+        "Stop before meshing if targetSize gives more triangles (2e7)"
+    );
 
     argList args(argc, argv);
+    const scalar maxTriangles = args.getOrDefault<scalar>("maxTriangles", 2e7);
+    if (!(maxTriangles >= 1))
+    {
+        FatalErrorInFunction
+            << "option -maxTriangles " << maxTriangles << " must be >= 1"
+            << exit(FatalError);
+    }
     Time runTime(args.rootPath(), args.caseName(), "system", "constant", false, false);
 
     const fileName dictFile =
@@ -410,6 +474,34 @@ int main(int argc, char *argv[])
         }
     }
 
+    // Stop at once when the target size would give far more triangles than
+    // the solvers can run (CGAL would run for minutes or exhaust memory):
+    // an equilateral triangle of edge h has the area sqrt(3)/4 h^2
+    {
+        scalar area = 0;
+        for (const shape& sh : solids)
+        {
+            scalar a = 0;
+            forAll(sh.points, i)
+            {
+                const vector2D& p = sh.points[i];
+                const vector2D& q = sh.points[(i + 1) % sh.points.size()];
+                a += 0.5*(p.x()*q.y() - p.y()*q.x());
+            }
+            area += mag(a);
+        }
+        const scalar estimate = area/(0.433*sqr(targetSize));
+        if (estimate > maxTriangles)
+        {
+            FatalIOErrorInFunction(meshDict)
+                << "entry 'targetSize' " << targetSize << " gives about "
+                << estimate << " triangles for the solids' area " << area
+                << " m2, more than -maxTriangles " << maxTriangles
+                << ": raise targetSize (or -maxTriangles)"
+                << exit(FatalIOError);
+        }
+    }
+
     // CGAL input
     cgalTriangulator::domain input;
     for (const List<shape>* group : {&solids, &holes})
@@ -459,6 +551,13 @@ int main(int argc, char *argv[])
             << "CGAL meshing failed: " << e.what() << exit(FatalIOError);
     }
     const scalar meshTime = clock.timeIncrement();
+
+    if (cgalMesh.triangleRegion.empty())
+    {
+        FatalIOErrorInFunction(meshDict)
+            << "the mesh has no triangles: entry 'holes' covers every solid"
+            << " of entry 'solids'" << exit(FatalIOError);
+    }
 
     // To the continuous solid mesh
     List<vector2D> points(cgalMesh.x.size());

@@ -32,6 +32,8 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
+#include <cmath>
+#include <cstdlib>
 #include "Time.H"
 #include "IOdictionary.H"
 #include "clockTime.H"
@@ -95,6 +97,24 @@ int main(int argc, char *argv[])
     argList::addBoolOption("vtk", "Write VTK/solidMeshCheck_0.vtu if the mesh passes");
 
     argList args(argc, argv);
+    // A tolerance <= 0 or NaN would make the duplicate search divide by it.
+    // Parsed here: OpenFOAM's readDouble traps (FOAM_SIGFPE) on "NaN", and
+    // so does comparing a NaN, hence std::isfinite first
+    const std::string mergeTolString =
+        args.getOrDefault<string>("mergeTol", "1e-6");
+    char* end = nullptr;
+    const scalar mergeTol = std::strtod(mergeTolString.c_str(), &end);
+    if
+    (
+        end == mergeTolString.c_str() || *end != '\0'
+     || !std::isfinite(mergeTol) || !(mergeTol > 0 && mergeTol < 1)
+    )
+    {
+        FatalErrorInFunction
+            << "option -mergeTol " << mergeTolString.c_str()
+            << " must be a number in (0, 1) (a"
+            << " fraction of the shortest edge)" << exit(FatalError);
+    }
     Time runTime(args.rootPath(), args.caseName(), "system", "constant", false, false);
 
     clockTime clock;
@@ -139,7 +159,7 @@ int main(int argc, char *argv[])
     {
         const scalarList shortest = solidMeshQuality::shortestEdges(mesh);
         const scalar tol =
-            args.getOrDefault<scalar>("mergeTol", 1e-6)
+            mergeTol
            *(shortest.size() ? gMin(shortest) : scalar(1));
         const List<labelPair> dup =
             solidMeshQuality::duplicatePoints(mesh, tol);

@@ -137,6 +137,12 @@ int main(int argc, char *argv[])
     );
     const triangleMesh mesh(meshDict);
     const label blockSize = args.getOrDefault<label>("blockSize", 32);
+    if (blockSize < 1)
+    {
+        FatalErrorInFunction
+            << "option -blockSize " << blockSize << " must be >= 1 (triangles"
+            << " per METIS block)" << exit(FatalError);
+    }
 
     const double t0 = seconds();
     const triangleMesh renumbered = solidMeshRenumber::renumber(mesh, blockSize);

@@ -8,6 +8,7 @@
 
 #include "blastMixture.H"
 #include "SubList.H"
+#include "caseChecks.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -27,6 +28,15 @@ Foam::blastMixture::blastMixture(const dictionary& dict)
     {
         FatalIOErrorInFunction(dict)
             << "Entry 'alphaMin' must be in [0, 0.1], got " << alphaMin_
+            << exit(FatalIOError);
+    }
+    // A material defined twice would be merged, the later entries winning
+    caseChecks::checkNoDuplicateEntries(dict);
+    if (materials_.size() == 2 && materials_[0] == materials_[1])
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'materials' lists " << materials_[0] << " twice: two"
+            << " different materials (products first) or one"
             << exit(FatalIOError);
     }
     forAll(materials_, i)

@@ -51,6 +51,19 @@ void Foam::femdemOutput::writeVtk
     const scalar time
 )
 {
+    // The first step of a run continues the series of an earlier run: a
+    // restarted solid (timeIndex > 0, read from a femdemState) keeps the
+    // frames up to the restart time and does not write that one again; a
+    // fresh solid replaces the frames from its start time on
+    if (writer.nSteps() == 0 && !writer.continued())
+    {
+        writer.setLinesName("cracks");
+        if (writer.continueSeries(time, solid.timeIndex() > 0))
+        {
+            return;
+        }
+    }
+
     const continuousView& view = solid.view();
     writer.beginStep(time, view.points(), view.triangles());
     writer.addTriangleField("stress", solid.stress());
@@ -58,9 +71,9 @@ void Foam::femdemOutput::writeVtk
     writer.addTriangleField("damage", solid.triangleDamage());
     writer.addTriangleField("material", solid.triangleMaterial());
     writer.addTriangleField("fragment", view.fragmentOfTriangle());
-    writer.endStep();
 
-    // Broken joints as lines along their mid-line
+    // Broken joints as lines along their mid-line, with the joint's
+    // initial length: VTK/cracks_<step>.vtp and cracks.vtp.series
     const List<jointNodeList>& jn = solid.topology().jointNodes();
     DynamicList<vector2D> pts;
     DynamicList<edge> lines;
@@ -75,13 +88,8 @@ void Foam::femdemOutput::writeVtk
         lines.append(edge(i, i + 1));
         length.append(solid.jointLength0()[j]);
     }
-    solidVtkWriter::writeLines
-    (
-        vtkDir/("cracks_" + Foam::name(writer.nSteps() - 1) + ".vtp"),
-        pts,
-        edgeList(lines),
-        length
-    );
+    writer.addLines(pts, edgeList(lines), length, "initialJointLength");
+    writer.endStep();
 }
 
 

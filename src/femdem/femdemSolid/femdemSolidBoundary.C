@@ -46,6 +46,12 @@ void Foam::femdemSolid::setBoundaryConditions(const dictionary& dict)
         bc.pressure = 0;
         bc.mask = 3;
         bc.rampTime = d.getOrDefault<scalar>("rampTime", 0);
+        if (!(bc.rampTime >= 0))
+        {
+            FatalIOErrorInFunction(d)
+                << "entry 'rampTime' is " << bc.rampTime << "; it must be"
+                << " >= 0 (0: no ramp)" << exit(FatalIOError);
+        }
         if (type == "fixed")
         {
             bc.type = boundaryCondition::FIXED;

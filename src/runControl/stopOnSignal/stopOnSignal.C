@@ -53,6 +53,7 @@ Foam::stopOnSignal::stopOnSignal()
     receivedSignal_ = 0;
     installHandler(SIGINT, &oldInt_);
     installHandler(SIGTERM, &oldTerm_);
+    installHandler(SIGUSR1, &oldUsr1_);
 }
 
 
@@ -62,6 +63,7 @@ Foam::stopOnSignal::~stopOnSignal()
 {
     sigaction(SIGINT, &oldInt_, nullptr);
     sigaction(SIGTERM, &oldTerm_, nullptr);
+    sigaction(SIGUSR1, &oldUsr1_, nullptr);
 }
 
 
@@ -85,6 +87,7 @@ Foam::word Foam::stopOnSignal::signalName(const int sigNum)
     {
         case SIGINT: return "SIGINT";
         case SIGTERM: return "SIGTERM";
+        case SIGUSR1: return "SIGUSR1";
         default: return "signal_" + Foam::name(sigNum);
     }
 }

@@ -200,6 +200,15 @@ void Foam::gmshReader::readNodes2(std::istream& is)
         {
             fail("$Nodes: node " + std::to_string(i) + " unreadable");
         }
+        if (nodeIndex_.found(tag))
+        {
+            fail
+            (
+                "$Nodes: duplicate node id " + std::to_string(tag)
+              + " (node " + std::to_string(i) + " of the section repeats the"
+                " id of an earlier node)"
+            );
+        }
         nodeIndex_.set(tag, nodeTag_.size());
         nodeTag_.append(tag);
         nodePoint_.append(vector2D(x, y));
@@ -239,6 +248,15 @@ void Foam::gmshReader::readNodes4(std::istream& is)
             if (!is)
             {
                 fail("$Nodes: node " + std::to_string(tags[i]) + " unreadable");
+            }
+            if (nodeIndex_.found(tags[i]))
+            {
+                fail
+                (
+                    "$Nodes: duplicate node id " + std::to_string(tags[i])
+                  + " (block " + std::to_string(blk) + " repeats the id of"
+                    " an earlier node)"
+                );
             }
             nodeIndex_.set(tags[i], nodeTag_.size());
             nodeTag_.append(tags[i]);
@@ -515,7 +533,22 @@ Foam::triangleMesh Foam::gmshReader::mesh()
         );
     }
 
-    // Materials: physical surfaces in order of tag, "solid" for none
+    // Materials: physical surfaces in order of tag. A triangle in no
+    // physical surface has no material name (and its mesh usually no named
+    // boundary either): an error rather than a made-up material
+    forAll(triPhysical_, e)
+    {
+        if (triPhysical_[e] < 0)
+        {
+            fail
+            (
+                "triangle element " + std::to_string(triTag_[e])
+              + " is in no physical surface: define physical groups"
+                " (Physical Surface(\"rock\") = {...}; for the materials,"
+                " Physical Curve(\"walls\") = {...}; for the patches)"
+            );
+        }
+    }
     SortableList<label> physicals(triPhysical_);
     physicals.sort();
     DynamicList<label> surfaceTags;
@@ -532,8 +565,7 @@ Foam::triangleMesh Foam::gmshReader::mesh()
     {
         const label p = surfaceTags[m];
         materials[m] =
-            p < 0 ? word("solid")
-          : surfaceNames_.found(p) ? surfaceNames_[p]
+            surfaceNames_.found(p) ? surfaceNames_[p]
           : word("material" + Foam::name(p));
         materialOfPhysical.set(p, m);
     }

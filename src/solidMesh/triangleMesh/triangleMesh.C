@@ -58,6 +58,29 @@ void Foam::triangleMesh::validate(const dictionary* dictPtr) const
     {
         meshError(dictPtr, "entry 'materials' is empty");
     }
+    forAll(materials_, m)
+    {
+        if (materials_.find(materials_[m]) != m)
+        {
+            meshError
+            (
+                dictPtr,
+                "entry 'materials': material '" + materials_[m]
+              + "' is listed twice (" + Foam::name(materials_.find(materials_[m]))
+              + " and " + Foam::name(m) + "): each name once"
+            );
+        }
+    }
+    // Every solver divides by the number and the sizes of the triangles
+    if (triangles_.empty())
+    {
+        meshError
+        (
+            dictPtr,
+            "entry 'triangles' is empty: the solid mesh has no triangles"
+            " (e.g. holes covering the solids)"
+        );
+    }
 
     forAll(triangles_, t)
     {

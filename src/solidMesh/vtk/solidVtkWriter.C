@@ -12,6 +12,8 @@ License
 #include "error.H"
 
 #include <fstream>
+#include <regex>
+#include <sstream>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -79,6 +81,85 @@ void writePoints(vtk::formatter& fmt, const UList<vector2D>& points)
     fmt.tag(vtk::fileTag::POINTS);
     writeFloats(fmt, "Points", 3, flatPoints(points));
     fmt.endTag(vtk::fileTag::POINTS);
+}
+
+//- The entries (file, time) of a .series file written by
+//  vtk::seriesWriter: { "name" : "femdem_3.vtu", "time" : 0.002 }
+DynamicList<fileNameInstant> readSeries(const fileName& file)
+{
+    DynamicList<fileNameInstant> entries;
+    std::ifstream is(file);
+    if (!is.good())
+    {
+        return entries;
+    }
+    std::stringstream buf;
+    buf << is.rdbuf();
+    const std::string text = buf.str();
+    static const std::regex entry
+    (
+        R"re(\{\s*"name"\s*:\s*"([^"]*)"\s*,\s*"time"\s*:\s*([-+0-9.eE]+)\s*\})re"
+    );
+    for
+    (
+        std::sregex_iterator it(text.begin(), text.end(), entry), end;
+        it != end;
+        ++it
+    )
+    {
+        entries.append
+        (
+            fileNameInstant(std::stod((*it)[2].str()), (*it)[1].str())
+        );
+    }
+    return entries;
+}
+
+//- Index i of <name>_<i>.<ext>, -1 if the file is not of that form
+label stepIndex(const fileName& file, const word& name)
+{
+    const std::string stem = file.nameLessExt();
+    const std::string prefix = name + "_";
+    label i = -1;
+    if
+    (
+        stem.size() > prefix.size()
+     && stem.compare(0, prefix.size(), prefix) == 0
+     && readLabel(stem.substr(prefix.size()), i)
+    )
+    {
+        return i;
+    }
+    return -1;
+}
+
+//- Keep the entries before startTime (and the one at it for a restart);
+//  the series files hold the times to 6 significant digits
+bool keepEntries
+(
+    DynamicList<fileNameInstant>& entries,
+    const scalar startTime,
+    const bool restart,
+    const word& name,
+    label& maxIndex
+)
+{
+    const scalar tol = 1e-5*mag(startTime) + VSMALL;
+    bool atStart = false;
+    DynamicList<fileNameInstant> kept;
+    for (const fileNameInstant& e : entries)
+    {
+        const bool before = e.value() < startTime - tol;
+        const bool at = !before && e.value() <= startTime + tol;
+        if (before || (restart && at))
+        {
+            kept.append(e);
+            atStart = atStart || at;
+            maxIndex = max(maxIndex, stepIndex(e.name(), name));
+        }
+    }
+    entries.transfer(kept);
+    return atStart;
 }
 
 autoPtr<vtk::formatter> openFile
@@ -155,7 +236,8 @@ Foam::solidVtkWriter::solidVtkWriter
 (
     const fileName& directory,
     const word& seriesName,
-    const vtk::formatType format
+    const vtk::formatType format,
+    const word& linesName
 )
 :
     directory_(directory),
@@ -164,7 +246,10 @@ Foam::solidVtkWriter::solidVtkWriter
     index_(0),
     inStep_(false),
     time_(0),
-    stepHasLines_(false)
+    stepHasLines_(false),
+    linesName_(linesName.empty() ? word(seriesName + "Lines") : linesName),
+    lineValueName_("value"),
+    continued_(false)
 {
     if (vtk::isLegacy(format) || vtk::isAppend(format))
     {
@@ -187,6 +272,59 @@ Foam::fileName Foam::solidVtkWriter::stepFile(const label i) const
 Foam::fileName Foam::solidVtkWriter::seriesFile() const
 {
     return directory_/seriesName_ + ".vtu.series";
+}
+
+
+Foam::fileName Foam::solidVtkWriter::linesSeriesFile() const
+{
+    return directory_/linesName_ + ".vtp.series";
+}
+
+
+void Foam::solidVtkWriter::setLinesName(const word& linesName)
+{
+    if (index_ > 0 || inStep_)
+    {
+        FatalErrorInFunction
+            << "setLinesName of " << seriesName_ << " after step "
+            << index_ << " was started" << exit(FatalError);
+    }
+    linesName_ = linesName;
+}
+
+
+bool Foam::solidVtkWriter::continueSeries
+(
+    const scalar startTime,
+    const bool restart
+)
+{
+    if (index_ > 0 || inStep_)
+    {
+        FatalErrorInFunction
+            << "continueSeries of " << seriesName_ << " after step "
+            << index_ << " was started" << exit(FatalError);
+    }
+    series_ = readSeries(seriesFile());
+    lineSeries_ = readSeries(linesSeriesFile());
+    label maxIndex = -1;
+    const bool atStart =
+        keepEntries(series_, startTime, restart, seriesName_, maxIndex);
+    keepEntries(lineSeries_, startTime, restart, linesName_, maxIndex);
+    index_ = maxIndex + 1;
+    continued_ = true;
+    // Rewrite the series now: dropped steps leave them even if this run
+    // writes no step
+    if (isFile(seriesFile()))
+    {
+        vtk::seriesWriter::write(seriesFile(), series_);
+        writePvd();
+    }
+    if (isFile(linesSeriesFile()))
+    {
+        vtk::seriesWriter::write(linesSeriesFile(), lineSeries_);
+    }
+    return atStart;
 }
 
 
@@ -234,7 +372,8 @@ void Foam::solidVtkWriter::addLines
 (
     const UList<vector2D>& points,
     const edgeList& lines,
-    const UList<scalar>& lineValues
+    const UList<scalar>& lineValues,
+    const word& valueName
 )
 {
     checkField
@@ -246,6 +385,7 @@ void Foam::solidVtkWriter::addLines
     linePoints_ = points;
     lines_ = lines;
     lineValues_ = lineValues;
+    lineValueName_ = valueName;
 }
 
 
@@ -428,14 +568,14 @@ void Foam::solidVtkWriter::endStep()
     if (stepHasLines_)
     {
         const fileName linesFile =
-            directory_/seriesName_ + "Lines_" + Foam::name(index_) + ".vtp";
-        writeLines(linesFile, linePoints_, lines_, lineValues_, format_);
-        lineSeries_.append(fileNameInstant(time_, linesFile.name()));
-        vtk::seriesWriter::write
+            directory_/linesName_ + "_" + Foam::name(index_) + ".vtp";
+        writeLines
         (
-            directory_/seriesName_ + "Lines.vtp.series",
-            lineSeries_
+            linesFile, linePoints_, lines_, lineValues_, format_,
+            lineValueName_
         );
+        lineSeries_.append(fileNameInstant(time_, linesFile.name()));
+        vtk::seriesWriter::write(linesSeriesFile(), lineSeries_);
     }
 
     ++index_;
@@ -449,7 +589,8 @@ void Foam::solidVtkWriter::writeLines
     const UList<vector2D>& points,
     const edgeList& lines,
     const UList<scalar>& lineValues,
-    const vtk::formatType format
+    const vtk::formatType format,
+    const word& valueName
 )
 {
     if (lineValues.size() && lineValues.size() != lines.size())
@@ -509,7 +650,7 @@ void Foam::solidVtkWriter::writeLines
     if (lineValues.size())
     {
         fmt.beginCellData();
-        writeFloats(fmt, "value", 1, lineValues);
+        writeFloats(fmt, valueName, 1, lineValues);
         fmt.endCellData();
     }
     fmt.endPiece();

@@ -93,6 +93,19 @@ TEST(stopOnSignal, SIGINTWritesTheCurrentStepAndEndsTheLoop)
 }
 
 
+// mpirun forwards SIGUSR1 without aborting the job: the clean stop of a
+// parallel run with mpirun's exit status 0
+TEST(stopOnSignal, SIGUSR1WritesTheCurrentStepAndEndsTheLoop)
+{
+    autoPtr<Time> runTime = makeTime("stopOnSignalUSR1");
+    const labelList writeSteps = runLoop(*runTime, SIGUSR1, 5);
+    EXPECT_EQ(writeSteps, labelList({5}));
+    EXPECT_FALSE(runTime->run());
+    EXPECT_TRUE(isFile(runTime->path()/"5"/"probe"));
+    EXPECT_EQ(stopOnSignal::signalName(SIGUSR1), word("SIGUSR1"));
+}
+
+
 TEST(stopOnSignal, NoSignalRunsToEndTime)
 {
     autoPtr<Time> runTime = makeTime("stopOnSignalNone");
