@@ -361,6 +361,9 @@ femdemCase misspeltTensileStrength 's/tensileStrength/tensilStrength/' "'tensile
 femdemCase missingMaterial 's/materials { rock/materials { granite/' "'rock'"
 femdemCase unknownCohesiveLaw 's/cohesiveLaw munjiza/cohesiveLaw munjitza/' "'munjitza'"
 femdemCase unknownContactLaw 's/contactLaw potential/contactLaw potentiall/' "'potentiall'"
+femdemCase unknownElasticLaw 's/cohesiveLaw munjiza;/cohesiveLaw munjiza; elasticLaw neoHookian;/' "'neoHookian'"
+femdemCase unknownMaterialElasticLaw 's/dampingRatio 0.1;/dampingRatio 0.1; elasticLaw linearElastic;/' "'linearElastic'"
+femdemCase maxStrainIncrementZero 's/cohesiveLaw munjiza;/cohesiveLaw munjiza; maxStrainIncrement 0;/' "'maxStrainIncrement'"
 femdemCase unknownBoundaryType 's/type velocity/type velocty/' "velocty"
 femdemCase unknownBoundaryPatch 's/left { type fixed; }/lft { type fixed; }/' "'lft'"
 

@@ -47,9 +47,15 @@ namespace
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::femdemMaterial::femdemMaterial(const word& name, const dictionary& dict)
+Foam::femdemMaterial::femdemMaterial
+(
+    const word& name,
+    const dictionary& dict,
+    const elasticLaw::lawType defaultLaw
+)
 :
-    name(name)
+    name(name),
+    law(elasticLaw::read(dict, defaultLaw))
 {
     E = readPositive(dict, "E");
     nu = dict.get<scalar>("nu");
@@ -103,7 +109,8 @@ Foam::femdemMaterial::femdemMaterial
     const word& name,
     scalar E, scalar nu, scalar rho,
     scalar ft, scalar c, scalar phiDeg,
-    scalar GI, scalar GII
+    scalar GI, scalar GII,
+    elasticLaw::lawType law
 )
 :
     name(name), E(E), nu(nu), rho(rho),
@@ -111,7 +118,8 @@ Foam::femdemMaterial::femdemMaterial
     pn(200*E), ps(200*E), pc(10*E),
     friction(Foam::tan(phiDeg*constant::mathematical::pi/180)),
     dampingRatio(0),
-    initialStress(symmTensor2D::zero)
+    initialStress(symmTensor2D::zero),
+    law(law)
 {
     update();
 }
@@ -124,6 +132,7 @@ void Foam::femdemMaterial::update()
     lambda = E*nu/((1 + nu)*(1 - 2*nu));
     mu = E/(2*(1 + nu));
     Mp = lambda + 2*mu;
+    elastic = elasticLaw::constants(lambda, mu, initialStress);
 }
 
 

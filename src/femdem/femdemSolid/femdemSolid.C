@@ -8,6 +8,7 @@ License
 #include "femdemSolid.H"
 #include "cohesiveLaw.H"
 #include "contactLaw.H"
+#include <cstdlib>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -26,6 +27,9 @@ void Foam::femdemSolid::setMaterials
 )
 {
     const dictionary& mdict = dict.subDict("materials");
+    // Top-level default of the materials' elastic law
+    const elasticLaw::lawType defaultLaw =
+        elasticLaw::read(dict, elasticLaw::neoHookean);
     const wordList& names = mesh.materials();
     if (names.size() > 16)
     {
@@ -43,7 +47,8 @@ void Foam::femdemSolid::setMaterials
                 << " sub-dictionary in 'materials' (found: " << mdict.toc()
                 << ")" << exit(FatalIOError);
         }
-        materials_[m] = femdemMaterial(names[m], mdict.subDict(names[m]));
+        materials_[m] =
+            femdemMaterial(names[m], mdict.subDict(names[m]), defaultLaw);
     }
     triangleMaterial_ = mesh.triangleMaterials();
 }
@@ -67,6 +72,15 @@ void Foam::femdemSolid::setReference(const triangleMesh& mesh)
         const scalar axx = X1.x() - X0.x(), axy = X2.x() - X0.x();
         const scalar ayx = X1.y() - X0.y(), ayy = X2.y() - X0.y();
         const scalar det = axx*ayy - axy*ayx;
+        // triangleMesh rejects such triangles; a mesh built otherwise must
+        // not divide by zero here
+        if (!(det > 0 && std::isfinite(1/det)))
+        {
+            FatalErrorInFunction
+                << "triangle " << t << " (" << X0 << " " << X1 << " " << X2
+                << ") has area " << 0.5*det << ": degenerate or inverted"
+                << exit(FatalError);
+        }
         DmInv_[t] = tensor2D(ayy/det, -axy/det, -ayx/det, axx/det);
         area0_[t] = 0.5*det;
         const scalar im = 3/(materials_[triangleMaterial_[t]].rho*area0_[t]);
@@ -122,170 +136,6 @@ void Foam::femdemSolid::markFreeEdges()
 }
 
 
-void Foam::femdemSolid::computeStableTimeStep()
-{
-    // Highest frequency per node: element (2c/h_min)^2 plus the joint and
-    // contact springs acting on the node (added in parallel)
-    scalarList omega2(x_.size(), scalar(0));
-    scalar maxXi = 0;
-    forAll(area0_, t)
-    {
-        const femdemMaterial& mat = materials_[triangleMaterial_[t]];
-        scalar maxEdge = 0;
-        for (label k = 0; k < 3; ++k)
-        {
-            maxEdge = max(maxEdge, mag(x_[3*t + (k + 1) % 3] - x_[3*t + k]));
-        }
-        const scalar hMin = 2*area0_[t]/maxEdge;
-        const scalar wt = 2*mat.waveSpeed()/hMin;
-        // Contact spring of a free-face node: traction 3 p d/h_min over L/2
-        const scalar kc = 1.5*mat.pc*maxEdge/hMin;
-        for (label k = 0; k < 3; ++k)
-        {
-            const label n = 3*t + k;
-            omega2[n] += wt*wt + 2*kc*invMass_[n];
-        }
-        maxXi = max(maxXi, mat.dampingRatio);
-    }
-    forAll(jointClass_, j)
-    {
-        const femdemJointProperties& P = jointClasses_[jointClass_[j]];
-        const scalar k = 0.5*max(P.pn, P.ps);
-        const jointNodeList& n = topo_.jointNodes()[j];
-        for (label e = 0; e < 2; ++e)
-        {
-            const label p = n[e], q = n[e + 2];
-            const scalar w2 = k*(invMass_[p] + invMass_[q]);
-            omega2[p] += w2;
-            omega2[q] += w2;
-        }
-    }
-    scalar omegaMax = 0;
-    forAll(omega2, n) omegaMax = max(omegaMax, omega2[n]);
-    omegaMax = std::sqrt(omegaMax);
-    const scalar dampingFactor = std::sqrt(1 + maxXi*maxXi) - maxXi;
-    deltaT_ = safety_*2/omegaMax*dampingFactor;
-}
-
-
-void Foam::femdemSolid::addTriangleForces
-(
-    UList<vector2D>& fe,
-    UList<vector2D>& fv
-) const
-{
-    // Per-material constants, looked up by index in the loop
-    const label nMat = materials_.size();
-    scalar lam[16], mu2[16], etaC[16], s0xx[16], s0xy[16], s0yy[16];
-    if (nMat > 16)
-    {
-        FatalErrorInFunction << "more than 16 materials" << exit(FatalError);
-    }
-    for (label m = 0; m < nMat; ++m)
-    {
-        const femdemMaterial& mat = materials_[m];
-        lam[m] = mat.lambda;
-        mu2[m] = 2*mat.mu;
-        etaC[m] = mat.dampingRatio*2*std::sqrt(mat.rho*mat.Mp);
-        s0xx[m] = mat.initialStress.xx();
-        s0xy[m] = mat.initialStress.xy();
-        s0yy[m] = mat.initialStress.yy();
-    }
-
-    const vector2D* x = x_.cdata();
-    const vector2D* v = v_.cdata();
-    const tensor2D* Di = DmInv_.cdata();
-    const scalar* A0 = area0_.cdata();
-    const label* matOf = triangleMaterial_.cdata();
-    vector2D* pe = fe.data();
-    vector2D* pv = fv.data();
-
-    const label nTri = area0_.size();
-    for (label t = 0; t < nTri; ++t)
-    {
-        const label n0 = 3*t;
-        const label m = matOf[t];
-        const vector2D& x0 = x[n0];
-        const vector2D& x1 = x[n0 + 1];
-        const vector2D& x2 = x[n0 + 2];
-        const tensor2D& D = Di[t];
-        const scalar d1x = x1.x() - x0.x(), d1y = x1.y() - x0.y();
-        const scalar d2x = x2.x() - x0.x(), d2y = x2.y() - x0.y();
-
-        // Deformation gradient F = Ds Dm^-1
-        const scalar Fxx = d1x*D.xx() + d2x*D.yx();
-        const scalar Fxy = d1x*D.xy() + d2x*D.yy();
-        const scalar Fyx = d1y*D.xx() + d2y*D.yx();
-        const scalar Fyy = d1y*D.xy() + d2y*D.yy();
-
-        // Green-Lagrange strain and St Venant-Kirchhoff stress
-        const scalar Exx = 0.5*(Fxx*Fxx + Fyx*Fyx - 1);
-        const scalar Eyy = 0.5*(Fxy*Fxy + Fyy*Fyy - 1);
-        const scalar Exy = 0.5*(Fxx*Fxy + Fyx*Fyy);
-        const scalar ltr = lam[m]*(Exx + Eyy);
-        const scalar Sxx = ltr + mu2[m]*Exx + s0xx[m];
-        const scalar Syy = ltr + mu2[m]*Eyy + s0yy[m];
-        const scalar Sxy = mu2[m]*Exy + s0xy[m];
-
-        // First Piola-Kirchhoff P = F S
-        const scalar Pxx = Fxx*Sxx + Fxy*Sxy;
-        const scalar Pxy = Fxx*Sxy + Fxy*Syy;
-        const scalar Pyx = Fyx*Sxx + Fyy*Sxy;
-        const scalar Pyy = Fyx*Sxy + Fyy*Syy;
-
-        // Nodal forces H = -A0 P Dm^-T: columns on nodes 1 and 2
-        const scalar a = -A0[t];
-        const scalar Hxx = a*(Pxx*D.xx() + Pxy*D.xy());
-        const scalar Hxy = a*(Pxx*D.yx() + Pxy*D.yy());
-        const scalar Hyx = a*(Pyx*D.xx() + Pyy*D.xy());
-        const scalar Hyy = a*(Pyx*D.yx() + Pyy*D.yy());
-        pe[n0 + 1].x() += Hxx;
-        pe[n0 + 1].y() += Hyx;
-        pe[n0 + 2].x() += Hxy;
-        pe[n0 + 2].y() += Hyy;
-        pe[n0].x() -= Hxx + Hxy;
-        pe[n0].y() -= Hyx + Hyy;
-
-        if (etaC[m] > 0)
-        {
-            // Viscous stress eta sym(L), L = dF/dt F^-1
-            const vector2D& v0 = v[n0];
-            const scalar w1x = v[n0 + 1].x() - v0.x(), w1y = v[n0 + 1].y() - v0.y();
-            const scalar w2x = v[n0 + 2].x() - v0.x(), w2y = v[n0 + 2].y() - v0.y();
-            const scalar Gxx = w1x*D.xx() + w2x*D.yx();
-            const scalar Gxy = w1x*D.xy() + w2x*D.yy();
-            const scalar Gyx = w1y*D.xx() + w2y*D.yx();
-            const scalar Gyy = w1y*D.xy() + w2y*D.yy();
-            const scalar J = Fxx*Fyy - Fxy*Fyx;
-            const scalar iJ = 1/J;
-            // F^-1 = [Fyy -Fxy; -Fyx Fxx]/J
-            const scalar Lxx = (Gxx*Fyy - Gxy*Fyx)*iJ;
-            const scalar Lxy = (-Gxx*Fxy + Gxy*Fxx)*iJ;
-            const scalar Lyx = (Gyx*Fyy - Gyy*Fyx)*iJ;
-            const scalar Lyy = (-Gyx*Fxy + Gyy*Fxx)*iJ;
-            const scalar eta = etaC[m]*std::sqrt(2*A0[t]);
-            const scalar sxx = eta*Lxx, syy = eta*Lyy;
-            const scalar sxy = 0.5*eta*(Lxy + Lyx);
-            // P_v = J sigma F^-T = sigma [Fyy -Fyx; -Fxy Fxx]
-            const scalar Qxx = sxx*Fyy - sxy*Fxy;
-            const scalar Qxy = -sxx*Fyx + sxy*Fxx;
-            const scalar Qyx = sxy*Fyy - syy*Fxy;
-            const scalar Qyy = -sxy*Fyx + syy*Fxx;
-            const scalar Vxx = a*(Qxx*D.xx() + Qxy*D.xy());
-            const scalar Vxy = a*(Qxx*D.yx() + Qxy*D.yy());
-            const scalar Vyx = a*(Qyx*D.xx() + Qyy*D.xy());
-            const scalar Vyy = a*(Qyx*D.yx() + Qyy*D.yy());
-            pv[n0 + 1].x() += Vxx;
-            pv[n0 + 1].y() += Vyx;
-            pv[n0 + 2].x() += Vxy;
-            pv[n0 + 2].y() += Vyy;
-            pv[n0].x() -= Vxx + Vxy;
-            pv[n0].y() -= Vyx + Vyy;
-        }
-    }
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::femdemSolid::femdemSolid
@@ -296,6 +146,7 @@ Foam::femdemSolid::femdemSolid
 :
     topo_(mesh),
     patchNames_(mesh.patchNames()),
+    singleLaw_(-1),
     nBroken_(0),
     gravity_(dict.getOrDefault<vector2D>("gravity", vector2D::zero)),
     massDamping_(dict.getOrDefault<scalar>("massDamping", 0)),
@@ -305,6 +156,8 @@ Foam::femdemSolid::femdemSolid
     step_(0),
     deltaT_(0),
     safety_(dict.getOrDefault<scalar>("timeStepSafety", 0.5)),
+    stiffestTriangle_(-1),
+    maxStrainIncrement_(dict.getOrDefault<scalar>("maxStrainIncrement", 0.1)),
     maxNodeSpeed_(dict.getOrDefault<scalar>("maxNodeSpeed", 1e5)),
     maxSpeedSqr_(0),
     trackEnergy_(dict.getOrDefault<bool>("trackEnergy", false)),
@@ -317,6 +170,12 @@ Foam::femdemSolid::femdemSolid
         FatalIOErrorInFunction(dict)
             << "entry 'timeStepSafety' must lie in (0, 1], got " << safety_
             << exit(FatalIOError);
+    }
+    if (!(maxStrainIncrement_ > 0 && maxStrainIncrement_ <= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'maxStrainIncrement' must lie in (0, 1], got "
+            << maxStrainIncrement_ << exit(FatalIOError);
     }
     if (!(maxNodeSpeed_ > 0))
     {
@@ -332,10 +191,12 @@ Foam::femdemSolid::femdemSolid
     }
     setMaterials(mesh, dict);
     setReference(mesh);
+    setLawGroups();
     setJoints();
     markFreeEdges();
     setBoundaryConditions(dict);
-    computeStableTimeStep();
+    setStableStepConstants();
+    updateStableTimeStep();
     // Optional uniform initial velocity (a restart state overrides it)
     v_ = dict.getOrDefault<vector2D>("initialVelocity", vector2D::zero);
     if (trackEnergy_)
@@ -405,7 +266,7 @@ void Foam::femdemSolid::step(const scalar dt)
     {
         f_ = Zero;
         addLoads(f_);
-        addTriangleForces(f_, f_);
+        setStableTimeStep(addTriangleForces(f_, f_));
         jointsBroken(cohesive_->addForces(*this, f_));
         contact_->addForces(*this, f_, dt);
     }
@@ -414,7 +275,7 @@ void Foam::femdemSolid::step(const scalar dt)
         fTri_ = Zero; fDamp_ = Zero; fJoint_ = Zero; fContact_ = Zero;
         fLoad_ = Zero;
         addLoads(fLoad_);
-        addTriangleForces(fTri_, fDamp_);
+        setStableTimeStep(addTriangleForces(fTri_, fDamp_));
         jointsBroken(cohesive_->addForces(*this, fJoint_));
         contact_->addForces(*this, fContact_, dt);
         for (label i = 0; i < n; ++i)
@@ -474,8 +335,8 @@ void Foam::femdemSolid::step(const scalar dt)
 
 Foam::label Foam::femdemSolid::advance(const scalar interval)
 {
-    const label n = max(label(std::ceil(interval/deltaT_*(1 - 1e-12))), 1);
-    const scalar dt = interval/n;
+    label n = max(label(std::ceil(interval/deltaT_*(1 - 1e-12))), 1);
+    scalar dt = interval/n;
     for (label i = 0; i < n; ++i)
     {
         step(dt);
@@ -483,8 +344,33 @@ Foam::label Foam::femdemSolid::advance(const scalar interval)
         {
             reportDivergence();
         }
+        // The step just taken set deltaT_ from the state it started at:
+        // when the solid has stiffened (compression) re-split the rest
+        if (deltaT_ < dt && i + 1 < n)
+        {
+            const scalar rest = (n - i - 1)*dt;
+            if (!(rest < 1e8*deltaT_)) reportStepCollapse(rest);
+            const label m = label(std::ceil(rest/deltaT_*(1 - 1e-12)));
+            dt = rest/m;
+            n = i + 1 + m;
+        }
     }
     return n;
+}
+
+
+void Foam::femdemSolid::reportStepCollapse(const scalar rest) const
+{
+    const label t = max(stiffestTriangle_, 0);
+    const vector2D d1 = x_[3*t + 1] - x_[3*t], d2 = x_[3*t + 2] - x_[3*t];
+    FatalErrorInFunction
+        << "the FEMDEM stable time step fell to " << deltaT_ << " s at time "
+        << time_ << ": more than 1e8 sub-steps for the remaining " << rest
+        << " s of the interval. Stiffest triangle " << t << " at "
+        << x_[3*t] << " has " << 0.5*(d1.x()*d2.y() - d1.y()*d2.x())/area0_[t]
+        << " of its initial area (crushed)."
+        << exit(FatalError);
+    std::abort();
 }
 
 
@@ -503,6 +389,7 @@ void Foam::femdemSolid::reportDivergence() const
         << " mesh may help). Stopping without writing this time; the last"
         << " written time is the last good state."
         << exit(FatalError);
+    std::abort();   // exit() throws or exits; keeps [[noreturn]] true
 }
 
 

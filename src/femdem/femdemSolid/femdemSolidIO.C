@@ -5,8 +5,8 @@ License
     GNU General Public License v3 or later (as OpenFOAM).
 
 Description
-    Diagnostics (energies, stresses, fragments, memory) and the state I/O of
-    femdemSolid.
+    Diagnostics (energies, fragments, memory) and the state I/O of
+    femdemSolid (strain energy and stress: femdemSolidElastic.C).
 
 \*---------------------------------------------------------------------------*/
 
@@ -20,51 +20,12 @@ namespace
 {
     using namespace Foam;
 
-    //- Deformation gradient of triangle t
-    inline tensor2D defGrad
-    (
-        const UList<vector2D>& x,
-        const tensor2D& D,
-        const label t
-    )
-    {
-        const vector2D d1 = x[3*t + 1] - x[3*t];
-        const vector2D d2 = x[3*t + 2] - x[3*t];
-        return tensor2D
-        (
-            d1.x()*D.xx() + d2.x()*D.yx(), d1.x()*D.xy() + d2.x()*D.yy(),
-            d1.y()*D.xx() + d2.y()*D.yx(), d1.y()*D.xy() + d2.y()*D.yy()
-        );
-    }
-
     template<class T>
     std::size_t bytes(const UList<T>& l) { return l.size()*sizeof(T); }
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::scalar Foam::femdemSolid::elasticEnergy() const
-{
-    scalar energy = 0;
-    forAll(area0_, t)
-    {
-        const femdemMaterial& mat = materials_[triangleMaterial_[t]];
-        const tensor2D F = defGrad(x_, DmInv_[t], t);
-        const scalar Exx = 0.5*(F.xx()*F.xx() + F.yx()*F.yx() - 1);
-        const scalar Eyy = 0.5*(F.xy()*F.xy() + F.yy()*F.yy() - 1);
-        const scalar Exy = 0.5*(F.xx()*F.xy() + F.yx()*F.yy());
-        const symmTensor2D& S0 = mat.initialStress;
-        energy += area0_[t]*
-        (
-            0.5*mat.lambda*sqr(Exx + Eyy)
-          + mat.mu*(Exx*Exx + Eyy*Eyy + 2*Exy*Exy)
-          + S0.xx()*Exx + S0.yy()*Eyy + 2*S0.xy()*Exy
-        );
-    }
-    return energy;
-}
-
 
 Foam::scalar Foam::femdemSolid::kineticEnergy() const
 {
@@ -103,31 +64,6 @@ void Foam::femdemSolid::resetEnergyBudget()
     wTri_ = wDamp_ = wJoint_ = wContact_ = wGravity_ = wExt_ = 0;
     jointStored0_ = cohesive_->storedEnergy(*this);
     energy0_ = kineticEnergy() + elasticEnergy() + jointStored0_;
-}
-
-
-Foam::List<Foam::symmTensor2D> Foam::femdemSolid::stress() const
-{
-    List<symmTensor2D> sigma(area0_.size());
-    forAll(area0_, t)
-    {
-        const femdemMaterial& mat = materials_[triangleMaterial_[t]];
-        const tensor2D F = defGrad(x_, DmInv_[t], t);
-        const scalar Exx = 0.5*(F.xx()*F.xx() + F.yx()*F.yx() - 1);
-        const scalar Eyy = 0.5*(F.xy()*F.xy() + F.yy()*F.yy() - 1);
-        const scalar Exy = 0.5*(F.xx()*F.xy() + F.yx()*F.yy());
-        const scalar ltr = mat.lambda*(Exx + Eyy);
-        const tensor2D S
-        (
-            ltr + 2*mat.mu*Exx + mat.initialStress.xx(),
-            2*mat.mu*Exy + mat.initialStress.xy(),
-            2*mat.mu*Exy + mat.initialStress.xy(),
-            ltr + 2*mat.mu*Eyy + mat.initialStress.yy()
-        );
-        const tensor2D s = (F & S & F.T())/det(F);
-        sigma[t] = symmTensor2D(s.xx(), 0.5*(s.xy() + s.yx()), s.yy());
-    }
-    return sigma;
 }
 
 
@@ -212,7 +148,8 @@ std::size_t Foam::femdemSolid::memoryBytes() const
       + bytes(topo_.boundaryPatch())
       + bytes(topo_.nodeVertex()) + bytes(topo_.initialPoints())
       + bytes(triangleMaterial_) + bytes(DmInv_) + bytes(area0_)
-      + bytes(freeEdges_)
+      + bytes(freeEdges_) + bytes(stepScale_) + bytes(springOmega2_)
+      + bytes(lawTriangles_[0]) + bytes(lawTriangles_[1])
       + bytes(x_) + bytes(v_) + bytes(f_) + bytes(invMass_) + bytes(fExt_)
       + bytes(jointClass_) + bytes(jointLength0_) + bytes(damage_)
       + bytes(broken_)
@@ -245,6 +182,9 @@ void Foam::femdemSolid::writeState(Ostream& os) const
           jointStored0_})
     );
     if (fExt_.size()) os.writeEntry("externalForce", fExt_);
+    // The step follows the state of the last force evaluation (one step
+    // behind x): kept so that a restart takes the same sub-steps
+    os.writeEntry("stableTimeStep", deltaT_);
     os.precision(oldPrecision);
 }
 
@@ -292,6 +232,18 @@ void Foam::femdemSolid::readState(const dictionary& dict)
     if (dict.found("externalForce"))
     {
         fExt_ = dict.get<List<vector2D>>("externalForce");
+    }
+    // A state written before the step followed the deformation has no
+    // entry: the step of the state read
+    if (!dict.readIfPresent("stableTimeStep", deltaT_))
+    {
+        updateStableTimeStep();
+    }
+    else if (!(deltaT_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'stableTimeStep' must be positive, got " << deltaT_
+            << exit(FatalIOError);
     }
 }
 

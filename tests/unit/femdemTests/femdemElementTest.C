@@ -12,7 +12,15 @@ namespace
         "cohesiveLaw munjiza; contactLaw none; materials { "
       + material("rock") + " }";
 
-    // Maximum over triangles of |sigma - expected| / |expected| (or / E)
+    //- The laws, as named in femdemProperties
+    const wordList laws({"StVenantKirchhoff", "neoHookean"});
+
+    std::string lawProps(const word& law)
+    {
+        return "elasticLaw " + law + "; " + props;
+    }
+
+    // Maximum over triangles of |sigma - expected| / scale
     scalar maxDeviation
     (
         const List<symmTensor2D>& s,
@@ -28,61 +36,86 @@ namespace
         return dev;
     }
 
-    // Map every node with x -> A x + b
-    void mapNodes(femdemSolid& solid, const tensor2D& A, const vector2D& b)
+    // Largest net force on an interior vertex over the largest nodal force
+    scalar interiorImbalance(const femdemSolid& solid, const triangleMesh& mesh)
     {
-        List<vector2D>& x = solid.xRef();
-        for (vector2D& p : x) p = (A & p) + b;
-    }
-
-    // Cauchy stress of St Venant-Kirchhoff for F
-    symmTensor2D svkStress(const femdemMaterial& m, const tensor2D& F)
-    {
-        const tensor2D E = 0.5*((F.T() & F) - tensor2D::I);
-        const tensor2D S = m.lambda*tr(E)*tensor2D::I + 2*m.mu*E;
-        const tensor2D s = (F & S & F.T())/det(F);
-        return symmTensor2D(s.xx(), s.xy(), s.yy());
+        const List<vector2D>& f = solid.force();
+        const jointTopology& topo = solid.topology();
+        scalar maxInterior = 0, fScale = 0;
+        // Sum the forces of all nodes that started at the same vertex
+        List<vector2D> vertexForce(mesh.nPoints(), Zero);
+        forAll(f, n)
+        {
+            vertexForce[topo.nodeVertex()[n]] += f[n];
+            fScale = max(fScale, mag(f[n]));
+        }
+        forAll(vertexForce, p)
+        {
+            const vector2D& X = mesh.points()[p];
+            const bool interior =
+                X.x() > 1e-9 && X.x() < 2 - 1e-9
+             && X.y() > 1e-9 && X.y() < 1 - 1e-9;
+            if (interior) maxInterior = max(maxInterior, mag(vertexForce[p]));
+        }
+        return maxInterior/fScale;
     }
 }
 
 
 TEST(femdemElement, patchTestUniformStrain)
 {
+    // Both laws: a uniform F gives the law's closed-form stress in every
+    // triangle and no net force on interior vertices
     const triangleMesh mesh =
         triangleMesh::rectangle(vector2D(0, 0), vector2D(2, 1), 6, 4, "rock");
-    femdemSolid solid(mesh, dict(props));
     const tensor2D F(1.001, 2e-4, -3e-4, 0.9995);
-    mapNodes(solid, F, vector2D(0.3, -0.2));
-
-    const symmTensor2D expected = svkStress(solid.materials()[0], F);
-    const scalar dev = maxDeviation(solid.stress(), expected, mag(expected));
-    RecordProperty("sigmaXX", std::to_string(expected.xx()));
-    RecordProperty("maxRelativeDeviation", sci(dev));
-    EXPECT_LT(dev, 1e-10);
-
-    // Uniform stress: joints are closed, so the interior nodal forces of
-    // the triangles are balanced across every joint (no joint force);
-    // only boundary nodes carry a net force.
-    solid.step(1e-30);
-    const List<vector2D>& f = solid.force();
-    const jointTopology& topo = solid.topology();
-    scalar maxInterior = 0, fScale = 0;
-    // Sum the forces of all nodes that started at the same vertex
-    List<vector2D> vertexForce(mesh.nPoints(), Zero);
-    forAll(f, n)
+    for (const word& law : laws)
     {
-        vertexForce[topo.nodeVertex()[n]] += f[n];
-        fScale = max(fScale, mag(f[n]));
+        femdemSolid solid(mesh, dict(lawProps(law)));
+        EXPECT_EQ(label(solid.materials()[0].law), elasticLaw::names[law]);
+        mapNodes(solid, F, vector2D(0.3, -0.2));
+        const symmTensor2D expected = lawStress(solid.materials()[0], F);
+        const scalar dev =
+            maxDeviation(solid.stress(), expected, mag(expected));
+        RecordProperty(law + "_sigmaXX", std::to_string(expected.xx()));
+        RecordProperty(law + "_maxRelativeDeviation", sci(dev));
+        EXPECT_LT(dev, 1e-10) << law;
+
+        // Uniform stress: joints are closed, so the interior nodal forces
+        // of the triangles balance across every joint (no joint force)
+        solid.step(1e-30);
+        const scalar imbalance = interiorImbalance(solid, mesh);
+        RecordProperty(law + "_interiorForceImbalance", sci(imbalance));
+        EXPECT_LT(imbalance, 1e-10) << law;
     }
-    forAll(vertexForce, p)
+
+    // Mixed laws (left half St Venant-Kirchhoff, right half neo-Hookean):
+    // each group of triangles follows its own law
+    const triangleMesh mixed =
+        splitMaterials(mesh, 1, wordList({"rock", "soft"}));
+    const labelList& triMat = mixed.triangleMaterials();
+    femdemSolid solid
+    (
+        mixed,
+        dict
+        (
+            "contactLaw none; materials { "
+          + material("rock", "elasticLaw StVenantKirchhoff;")
+          + material("soft", "", "3e9", "0.3", "1500") + " }"
+        )
+    );
+    mapNodes(solid, F, vector2D::zero);
+    const List<symmTensor2D> sigma = solid.stress();
+    scalar devMixed = 0;
+    forAll(sigma, t)
     {
-        const vector2D& X = mesh.points()[p];
-        const bool interior =
-            X.x() > 1e-9 && X.x() < 2 - 1e-9 && X.y() > 1e-9 && X.y() < 1 - 1e-9;
-        if (interior) maxInterior = max(maxInterior, mag(vertexForce[p]));
+        const symmTensor2D ex = lawStress(solid.materials()[triMat[t]], F);
+        devMixed = max(devMixed, mag(sigma[t] - ex)/mag(ex));
     }
-    RecordProperty("interiorForceImbalance", sci(maxInterior/fScale));
-    EXPECT_LT(maxInterior/fScale, 1e-10);
+    EXPECT_EQ(solid.materials()[0].law, elasticLaw::StVenantKirchhoff);
+    EXPECT_EQ(solid.materials()[1].law, elasticLaw::neoHookean);
+    RecordProperty("mixedLaws_maxRelativeDeviation", sci(devMixed));
+    EXPECT_LT(devMixed, 1e-10);
 }
 
 
@@ -90,35 +123,44 @@ TEST(femdemElement, patchTestRigidRotation)
 {
     const triangleMesh mesh =
         triangleMesh::rectangle(vector2D(0, 0), vector2D(2, 1), 6, 4, "rock");
-    femdemSolid solid(mesh, dict(props));
-    const scalar E = solid.materials()[0].E;
+    for (const word& law : laws)
+    {
+        femdemSolid solid(mesh, dict(lawProps(law)));
+        const scalar E = solid.materials()[0].E;
 
-    // 90 degrees, exactly
-    mapNodes(solid, tensor2D(0, -1, 1, 0), vector2D(5, 7));
-    const scalar dev90 = maxDeviation(solid.stress(), symmTensor2D::zero, E);
-    RecordProperty("rotation90_maxStressOverE", sci(dev90));
-    EXPECT_LT(dev90, 1e-10);
+        // 90 degrees, exactly
+        mapNodes(solid, tensor2D(0, -1, 1, 0), vector2D(5, 7));
+        const scalar dev90 =
+            maxDeviation(solid.stress(), symmTensor2D::zero, E);
+        RecordProperty(law + "_rotation90_maxStressOverE", sci(dev90));
+        EXPECT_LT(dev90, 1e-10) << law;
 
-    // No joint or element force either
-    solid.step(1e-30);
-    scalar fMax = 0;
-    for (const vector2D& fn : solid.force()) fMax = max(fMax, mag(fn));
-    const scalar fScale = E*0.25;   // E times a triangle edge
-    RecordProperty("rotation90_maxForceOverEh", sci(fMax/fScale));
-    EXPECT_LT(fMax/fScale, 1e-10);
+        // No joint or element force either
+        solid.step(1e-30);
+        scalar fMax = 0;
+        for (const vector2D& fn : solid.force()) fMax = max(fMax, mag(fn));
+        const scalar fScale = E*0.25;   // E times a triangle edge
+        RecordProperty(law + "_rotation90_maxForceOverEh", sci(fMax/fScale));
+        EXPECT_LT(fMax/fScale, 1e-10) << law;
 
-    // Strain then a 37 degree rotation: stress rotates with the body
-    femdemSolid solid2(mesh, dict(props));
-    const tensor2D U(1.002, 5e-4, 5e-4, 0.999);
-    const scalar a = 37*constant::mathematical::pi/180;
-    const tensor2D R(std::cos(a), -std::sin(a), std::sin(a), std::cos(a));
-    mapNodes(solid2, R & U, vector2D::zero);
-    const symmTensor2D s0 = svkStress(solid2.materials()[0], U);
-    const tensor2D sr = R & tensor2D(s0.xx(), s0.xy(), s0.xy(), s0.yy()) & R.T();
-    const symmTensor2D expected(sr.xx(), sr.xy(), sr.yy());
-    const scalar devR = maxDeviation(solid2.stress(), expected, mag(expected));
-    RecordProperty("strainedRotation37_relativeDeviation", sci(devR));
-    EXPECT_LT(devR, 1e-10);
+        // Strain then a 37 degree rotation: stress rotates with the body
+        femdemSolid solid2(mesh, dict(lawProps(law)));
+        const tensor2D U(1.002, 5e-4, 5e-4, 0.999);
+        const scalar a = 37*constant::mathematical::pi/180;
+        const tensor2D R(std::cos(a), -std::sin(a), std::sin(a), std::cos(a));
+        mapNodes(solid2, R & U, vector2D::zero);
+        const symmTensor2D s0 = lawStress(solid2.materials()[0], U);
+        const tensor2D sr =
+            R & tensor2D(s0.xx(), s0.xy(), s0.xy(), s0.yy()) & R.T();
+        const symmTensor2D expected(sr.xx(), sr.xy(), sr.yy());
+        const scalar devR =
+            maxDeviation(solid2.stress(), expected, mag(expected));
+        RecordProperty
+        (
+            law + "_strainedRotation37_relativeDeviation", sci(devR)
+        );
+        EXPECT_LT(devR, 1e-10) << law;
+    }
 }
 
 

@@ -166,7 +166,12 @@ TEST(femdemSolver, badInputNamesEntry)
         {"materials { " + material("rock") + " } boundaryConditions"
          " { lfet { type fixed; } }", "lfet"},
         {"materials { " + material("rock") + " } boundaryConditions"
-         " { left { type clamped; } }", "clamped"}
+         " { left { type clamped; } }", "clamped"},
+        {"elasticLaw neoHooke; materials { " + material("rock") + " }",
+         "entry 'elasticLaw': unknown elastic law 'neoHooke'; valid"
+         " elasticLaw names: (StVenantKirchhoff neoHookean)"},
+        {"materials { " + material("rock", "elasticLaw linear;") + " }",
+         "unknown elastic law 'linear'"}
     });
     label caught = 0;
     for (const badCase& c : cases)
@@ -248,18 +253,9 @@ TEST(femdemSolver, twoMaterialsInterfaceRule)
     // the interface take the weaker strengths and the stiffer penalty
     const triangleMesh base =
         triangleMesh::rectangle(vector2D(0, 0), vector2D(0.2, 0.1), 4, 2, "rock");
-    labelList triMat(base.nTriangles());
-    forAll(triMat, t)
-    {
-        scalar xc = 0;
-        for (const label v : base.triangles()[t]) xc += base.points()[v].x()/3;
-        triMat[t] = xc < 0.1 ? 0 : 1;
-    }
-    const triangleMesh mesh
-    (
-        base.points(), base.triangles(), triMat, wordList({"rock", "steel"}),
-        base.patchNames(), base.patchEdges()
-    );
+    const triangleMesh mesh =
+        splitMaterials(base, 0.1, wordList({"rock", "steel"}));
+    const labelList& triMat = mesh.triangleMaterials();
     femdemSolid solid
     (
         mesh,
