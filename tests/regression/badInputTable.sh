@@ -468,6 +468,10 @@ prep femdemWriteIntervalZero barRun
 sed -i 's/writeInterval 2e-6;/writeInterval 0;/' system/controlDict
 check femdemWriteIntervalZero controlDict "'writeInterval'" femdemFoam
 
+prep writeIntervalZero sod
+setEntry system/controlDict writeInterval 0
+check writeIntervalZero controlDict "'writeInterval'" jwlIbFoam
+
 prep writeIntervalNegative sod
 setEntry system/controlDict writeInterval -0.01
 check writeIntervalNegative controlDict "'writeInterval'" jwlIbFoam

@@ -16,16 +16,18 @@ blockMesh > log.blockMesh 2>&1 && femdemMesh > log.femdemMesh 2>&1 || exit 1
 jwlIbFoam > log.jwlIbFoam 2>&1 || { tail -5 log.jwlIbFoam; exit 1; }
 fail=0
 /usr/bin/python3 - <<'PY' || fail=1
-import numpy as np, re, sys
-b = np.loadtxt("postProcessing/jwlIbFoam/0/budget.dat")
-steps = len(b)
-P = b[:, 3:5] + b[:, 5:7]
+import numpy as np, re, sys, os
+sys.path.insert(0, os.path.join(os.environ["JWLIBFOAM_PROJECT"], "tests", "regression", "coupledData"))
+import budget
+b = budget.load()
+steps = len(b["time"])
+P = np.stack([b["gasMomentumX"] + b["solidMomentumX"], b["gasMomentumY"] + b["solidMomentumY"]], axis=1)
 P0 = P[0]
 dP = np.abs(P - P0).max() / np.linalg.norm(P0)
-m = b[:, 2]
+m = b["gasMass"]
 dm = np.abs(m - m[0]).max() / m[0]
-E = b[:, 7] + b[:, 8:14].sum(axis=1)
-KE0 = b[0, 8]
+E = b["gasEnergy"] + budget.solidEnergy(b)
+KE0 = b["solidKinetic"][0]
 dE = abs(E[-1] - E[0]) / KE0
 
 def field(name):

@@ -28,6 +28,12 @@ Description
          (total momentum conserved), optionally (crackPressure) the gas
          pressure in opened sub-cell cracks;
       4. FEMDEM sub-cycled over dt with its own stable step.
+    With immersedBodyProperties 'method cutCell' (exact moving-boundary
+    finite volumes): 1. the step's geometry (fluid fractions at both ends,
+    time-averaged face apertures) from the solid moved on by dt v; 2. the
+    gas step with moving-wall fluxes and small-cell redistribution; 3. the
+    wall impulses on the solid's exposed edges; 4. FEMDEM sub-cycles, then
+    the gas pays exactly the work of those forces (cutCellSolidStep.H).
     A case without constant/femdemProperties runs as a pure gas solver.
 
     Inputs: constant/thermophysicalProperties (blastMixture),
@@ -54,6 +60,7 @@ Description
 #include "immersedBodyCoupling.H"
 #include "solidVtkWriter.H"
 #include "stopOnSignal.H"
+#include "caseChecks.H"
 #include "runProgress.H"
 #include "OFstream.H"
 #include "IOmanip.H"
@@ -125,11 +132,20 @@ int main(int argc, char *argv[])
     #include "postProcess.H"
 
     #include "addCheckCaseOptions.H"
+    caseChecks::checkCasePath(argc, argv);
     #include "setRootCaseLists.H"
+
+    // Before Time reads system/controlDict: mpirun without -parallel, and
+    // deltaT/writeInterval/endTime that Time would trap on (writeInterval
+    // 0) or accept and then do nothing
+    caseChecks::checkLaunch(args);
+    caseChecks::checkControlDict(args);
     #include "createTime.H"
+    caseChecks::checkStartTime(runTime);
     #include "createMesh.H"
     #include "createFields.H"
     #include "createSolid.H"
+    const bool cutCells = hasSolid && fluid.cutCells();
     #include "createTimeControls.H"
     #include "checkTimeControls.H"
     #include "createDiagnostics.H"
@@ -153,7 +169,7 @@ int main(int argc, char *argv[])
     {
         #include "readTimeControls.H"
 
-        if (hasSolid)
+        if (hasSolid && !cutCells)
         {
             const clockValue t0(clockValue::now());
             couplingPtr->project(solidPtr->x(), solidPtr->v());
@@ -168,6 +184,21 @@ int main(int argc, char *argv[])
         ++runTime;
         const scalar dt = runTime.deltaTValue();
 
+        if (cutCells)
+        {
+            // The step's geometry: the solid now and moved on by dt v
+            const clockValue t0(clockValue::now());
+            couplingPtr->startStep(solidPtr->view(), solidPtr->v(), dt);
+            const clockValue t1(clockValue::now());
+            fluid.setFluidFraction(couplingPtr->fluidFractionStart());
+            fluid.setEmbeddedBoundary
+            (
+                couplingPtr->fluidFractionEnd(), couplingPtr->aperture()
+            );
+            tProject += t1 - t0;
+            tFraction += t1.elapsed();
+        }
+
         {
             const clockValue t0(clockValue::now());
             fluid.advance(dt);
@@ -175,7 +206,11 @@ int main(int argc, char *argv[])
         }
 
         label nSubSteps = 0;
-        if (hasSolid)
+        if (cutCells)
+        {
+            #include "cutCellSolidStep.H"
+        }
+        else if (hasSolid)
         {
             femdemSolid& solid = solidPtr();
             const clockValue t0(clockValue::now());

@@ -1022,19 +1022,28 @@ void Foam::blastFluidSolver::assembleResidual()
 }
 
 
-bool Foam::blastFluidSolver::stage(const scalar a, const scalar dt)
+bool Foam::blastFluidSolver::stageFluxes()
 {
     if (!primitivesCurrent_ && !primitivesFromConservative(false))
     {
         return false;
     }
-
     faceStates();
     faceThermo();
     computeFluxes();
     if (QActive_)
     {
         addQScheme();
+    }
+    return true;
+}
+
+
+bool Foam::blastFluidSolver::stage(const scalar a, const scalar dt)
+{
+    if (!stageFluxes())
+    {
+        return false;
     }
     if (alphaSolidPtr_)
     {
@@ -1179,6 +1188,9 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     UsolidPtr_(nullptr),
     minFluidFraction_(0),
     absorptionBeta_(0),
+    cutCells_(false),
+    lostMass_(0),
+    lostEnergy_(0),
     primitivesCurrent_(false)
 {
     readControls();
@@ -1336,8 +1348,47 @@ Foam::scalar Foam::blastFluidSolver::maxDeltaT(const scalar maxCo) const
 }
 
 
+void Foam::blastFluidSolver::prepareRetry
+(
+    const label attempt,
+    const label maxAttempts
+)
+{
+    // Non-physical state: restart the step from its initial state with
+    // first-order reconstruction around the bad cells (grown twice, then
+    // everywhere)
+    ++nRetries_;
+    anyLowOrder_ = true;
+    rho_.primitiveFieldRef() = rho0_;
+    rhoU_.primitiveFieldRef() = rhoU0_;
+    rhoE_.primitiveFieldRef() = rhoE0_;
+    if (twoPhase_)
+    {
+        alpha1Ptr_->primitiveFieldRef() = alpha0_;
+        alphaRho1Ptr_->primitiveFieldRef() = alphaRho10_;
+    }
+    if (attempt + 2 < maxAttempts)
+    {
+        growLowOrder();
+        growLowOrder();
+    }
+    else
+    {
+        lowOrder_.primitiveFieldRef() = 1;
+        lowOrder_.correctBoundaryConditions();
+    }
+    primitivesCurrent_ = false;
+    primitivesFromConservative(true);
+}
+
+
 void Foam::blastFluidSolver::advance(const scalar dt)
 {
+    if (cutCells_)
+    {
+        advanceCutCells(dt);
+        return;
+    }
     rho0_ = rho_.primitiveField();
     rhoU0_ = rhoU_.primitiveField();
     rhoE0_ = rhoE_.primitiveField();
@@ -1388,30 +1439,7 @@ void Foam::blastFluidSolver::advance(const scalar dt)
             break;
         }
 
-        // Non-physical state: restart the step from its initial state with
-        // first-order reconstruction around the bad cells (grown twice,
-        // then everywhere)
-        ++nRetries_;
-        anyLowOrder_ = true;
-        rho_.primitiveFieldRef() = rho0_;
-        rhoU_.primitiveFieldRef() = rhoU0_;
-        rhoE_.primitiveFieldRef() = rhoE0_;
-        if (twoPhase_)
-        {
-            alpha1Ptr_->primitiveFieldRef() = alpha0_;
-            alphaRho1Ptr_->primitiveFieldRef() = alphaRho10_;
-        }
-        if (attempt + 2 < maxAttempts)
-        {
-            growLowOrder();
-            growLowOrder();
-        }
-        else
-        {
-            lowOrder_.primitiveFieldRef() = 1;
-            lowOrder_.correctBoundaryConditions();
-        }
-        primitivesFromConservative(true);
+        prepareRetry(attempt, maxAttempts);
     }
 
     // First order everywhere failed as well: stop naming time and cell

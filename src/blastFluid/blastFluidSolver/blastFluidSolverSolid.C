@@ -340,45 +340,8 @@ void Foam::blastFluidSolver::setSolid
     // The fluid fraction is part of the state (a pocket of gas squeezed
     // by the solid keeps minFluidFraction): written at write times and read
     // back on restart; from alpha_s on a fresh start
-    IOobject io
-    (
-        "fluidFraction",
-        mesh_.time().timeName(),
-        mesh_,
-        IOobject::READ_IF_PRESENT,
-        IOobject::AUTO_WRITE
-    );
-    if (io.typeHeaderOk<volScalarField>(true))
+    if (!readFluidFraction())
     {
-        fluidFractionPtr_.reset(new volScalarField(io, mesh_));
-        const scalarField& phi = fluidFractionPtr_->primitiveField();
-        forAll(phi, i)
-        {
-            if (!(phi[i] >= 0 && phi[i] <= 1))
-            {
-                FatalIOError
-                (
-                    FUNCTION_NAME, __FILE__, __LINE__,
-                    fluidFractionPtr_->objectPath(), 0, 0
-                )
-                    << "entry 'internalField': fluid fraction " << phi[i]
-                    << " in cell " << i << " is outside [0, 1]"
-                    << exit(FatalIOError);
-            }
-        }
-    }
-    else
-    {
-        fluidFractionPtr_.reset
-        (
-            new volScalarField
-            (
-                io,
-                mesh_,
-                dimensionedScalar("one", dimless, 1),
-                calculatedFvPatchScalarField::typeName
-            )
-        );
         fluidFractionFromSolid(fluidFractionPtr_->primitiveFieldRef());
     }
     setFaceFluidFraction();
@@ -710,6 +673,50 @@ void Foam::blastFluidSolver::updateFluidFraction()
     setFaceFluidFraction();
     primitivesCurrent_ = false;
     primitivesFromConservative(true);
+}
+
+
+bool Foam::blastFluidSolver::readFluidFraction()
+{
+    IOobject io
+    (
+        "fluidFraction",
+        mesh_.time().timeName(),
+        mesh_,
+        IOobject::READ_IF_PRESENT,
+        IOobject::AUTO_WRITE
+    );
+    if (!io.typeHeaderOk<volScalarField>(true))
+    {
+        fluidFractionPtr_.reset
+        (
+            new volScalarField
+            (
+                io,
+                mesh_,
+                dimensionedScalar("one", dimless, 1),
+                calculatedFvPatchScalarField::typeName
+            )
+        );
+        return false;
+    }
+    fluidFractionPtr_.reset(new volScalarField(io, mesh_));
+    const scalarField& phi = fluidFractionPtr_->primitiveField();
+    forAll(phi, i)
+    {
+        if (!(phi[i] >= 0 && phi[i] <= 1))
+        {
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__,
+                fluidFractionPtr_->objectPath(), 0, 0
+            )
+                << "entry 'internalField': fluid fraction " << phi[i]
+                << " in cell " << i << " is outside [0, 1]"
+                << exit(FatalIOError);
+        }
+    }
+    return true;
 }
 
 

@@ -87,12 +87,17 @@ Foam::label Foam::faceApertures::collinearSide
     const vector2D& p0,
     const vector2D& p1,
     const FixedList<vector2D, 3>& x0,
-    const FixedList<vector2D, 3>& x1
+    const FixedList<vector2D, 3>& x1,
+    label& edge
 )
 {
-    // An edge stays on the line of the face if both its vertices lie on it
-    // at both ends of the step (the distances are linear in tau)
+    // An edge lies on the line of the face over the whole step if both its
+    // vertices are within collinearTol face lengths of the line at both
+    // ends of the step (the distances are linear in tau): a solid surface
+    // that lies on a face (or a symmetry plane) up to round-off or joint
+    // compliance closes it, and does not leave a sliver of gas
     const vector2D d = p1 - p0;
+    const scalar tol = collinearTol*magSqr(d);
     FixedList<scalar, 3> s0, s1;
     for (label k = 0; k < 3; ++k)
     {
@@ -102,12 +107,60 @@ Foam::label Foam::faceApertures::collinearSide
     for (label k = 0; k < 3; ++k)
     {
         const label j = (k + 1) % 3, o = (k + 2) % 3;
-        if (s0[k] == 0 && s0[j] == 0 && s1[k] == 0 && s1[j] == 0)
+        if
+        (
+            mag(s0[k]) <= tol && mag(s0[j]) <= tol
+         && mag(s1[k]) <= tol && mag(s1[j]) <= tol
+        )
         {
+            edge = k;
             return s0[o] + s1[o] > 0 ? 1 : -1;
         }
     }
     return 0;
+}
+
+
+Foam::scalar Foam::faceApertures::averageEdgeOverlap
+(
+    const vector2D& p0,
+    const vector2D& p1,
+    const vector2D& a0,
+    const vector2D& a1,
+    const vector2D& b0,
+    const vector2D& b1
+)
+{
+    // The edge's ends projected on the face, t = (x - p0).d/|d|^2, move
+    // linearly in tau; the overlap of [t_a, t_b] with [0, 1] is linear
+    // between the times an end crosses 0 or 1: midpoint rule per interval
+    const vector2D d = p1 - p0;
+    const scalar r = 1/magSqr(d);
+    const scalar ta0 = ((a0 - p0) & d)*r, ta1 = ((a1 - p0) & d)*r;
+    const scalar tb0 = ((b0 - p0) & d)*r, tb1 = ((b1 - p0) & d)*r;
+    scalar t[6] = {0, 1};
+    label n = 2;
+    for (const scalar c : {0.0, 1.0})
+    {
+        for (const auto& e : {std::make_pair(ta0, ta1), std::make_pair(tb0, tb1)})
+        {
+            if ((e.first - c)*(e.second - c) < 0)
+            {
+                t[n++] = (c - e.first)/(e.second - e.first);
+            }
+        }
+    }
+    std::sort(t, t + n);
+    scalar sum = 0;
+    for (label i = 0; i + 1 < n; ++i)
+    {
+        const scalar m = 0.5*(t[i] + t[i + 1]);
+        const scalar ta = ta0 + m*(ta1 - ta0), tb = tb0 + m*(tb1 - tb0);
+        const scalar lo = max(min(ta, tb), scalar(0));
+        const scalar hi = min(max(ta, tb), scalar(1));
+        sum += (t[i + 1] - t[i])*max(hi - lo, scalar(0));
+    }
+    return sum*mag(d);
 }
 
 
@@ -247,19 +300,10 @@ namespace
         std::pair<List<vector2D>, List<vector2D>> seg;
         seg.first.setSize(mesh.nFaces(), Zero);
         seg.second.setSize(mesh.nFaces(), Zero);
-        boolList onEmpty(mesh.nFaces(), false);
-        for (const polyPatch& pp : mesh.boundaryMesh())
-        {
-            if (isA<emptyPolyPatch>(pp))
-            {
-                SubList<bool>(onEmpty, pp.size(), pp.start()) = true;
-            }
-        }
         const scalar zMid = 0.5*(mesh.bounds().min().z() + mesh.bounds().max().z());
         const pointField& pts = mesh.points();
-        for (label facei = 0; facei < mesh.nFaces(); ++facei)
+        auto segment = [&](const label facei)
         {
-            if (onEmpty[facei]) continue;
             const face& f = mesh.faces()[facei];
             label k = 0;
             vector2D ends[2];
@@ -288,6 +332,18 @@ namespace
             }
             seg.first[facei] = ends[0];
             seg.second[facei] = ends[1];
+        };
+        for (label facei = 0; facei < mesh.nInternalFaces(); ++facei)
+        {
+            segment(facei);
+        }
+        for (const polyPatch& pp : mesh.boundaryMesh())
+        {
+            if (isA<emptyPolyPatch>(pp)) continue;
+            forAll(pp, i)
+            {
+                segment(pp.start() + i);
+            }
         }
         return seg;
     }
@@ -399,16 +455,22 @@ void Foam::faceApertures::update
                     return;
                 }
                 ++nPairs_;
-                const scalar c =
-                    moving
-                  ? averageCoveredLength(p0, p1, x0, x1)
-                  : coveredLength(p0, p1, x0[0], x0[1], x0[2]);
-                if (c <= 0) return;
                 // A face along an edge shared by two triangles would be
                 // counted twice: such parts are counted per side, once
-                const label side = collinearSide(p0, p1, x0, x1);
-                if (side == 0) covered_[f] += c;
-                else if (side > 0) onLeft_[f] += c;
+                label edge = -1;
+                const label side = collinearSide(p0, p1, x0, x1, edge);
+                if (side == 0)
+                {
+                    covered_[f] +=
+                        moving
+                      ? averageCoveredLength(p0, p1, x0, x1)
+                      : coveredLength(p0, p1, x0[0], x0[1], x0[2]);
+                    return;
+                }
+                const label j = (edge + 1) % 3;
+                const scalar c =
+                    averageEdgeOverlap(p0, p1, x0[edge], x1[edge], x0[j], x1[j]);
+                if (side > 0) onLeft_[f] += c;
                 else onRight_[f] += c;
             }
         );

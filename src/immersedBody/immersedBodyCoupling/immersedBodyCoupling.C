@@ -8,6 +8,17 @@ License
 #include "immersedBodyCoupling.H"
 #include "fvMesh.H"
 #include "zeroGradientFvPatchFields.H"
+#include "syncTools.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::immersedBodyCoupling::method>
+Foam::immersedBodyCoupling::methodNames
+({
+    {method::cutCell, "cutCell"},
+    {method::fluidFraction, "fluidFraction"},
+});
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -22,9 +33,28 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
     dict_(dict),
     projection_(mesh),
     depth_(returnReduce(mesh.bounds().span().z(), maxOp<scalar>())),
+    method_
+    (
+        methodNames.getOrDefault("method", dict, method::fluidFraction)
+    ),
     beta_(dict.getOrDefault<scalar>("beta", 1)),
     minFluidFraction_(dict.getOrDefault<scalar>("minFluidFraction", 0.02)),
     crackPressure_(dict.getOrDefault<bool>("crackPressure", false)),
+    aperture_
+    (
+        IOobject
+        (
+            "aperture",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedScalar("one", dimless, 1)
+    ),
+    nNodes_(0),
+    viewTriangles_(nullptr),
     alphaSolid_
     (
         IOobject
@@ -58,7 +88,10 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
     alphaSolidRead_(alphaSolid_.headerOk())
 {
     // A misspelt optional entry would silently take its default
-    const wordList valid({"beta", "minFluidFraction", "crackPressure"});
+    const wordList valid
+    ({
+        "method", "beta", "minFluidFraction", "crackPressure"
+    });
     for (const entry& e : dict)
     {
         if (e.keyword() != "FoamFile" && !valid.found(e.keyword()))
@@ -91,6 +124,18 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
     {
         triangles_[t] = FixedList<label, 3>({3*t, 3*t + 1, 3*t + 2});
     }
+    if (method_ == method::cutCell)
+    {
+        if (crackPressure_)
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'crackPressure': the cutCell method has no"
+                << " sub-cell crack pressure (it would do work the gas does"
+                << " not pay for); use method fluidFraction for it"
+                << exit(FatalIOError);
+        }
+        apertures_.reset(new faceApertures(mesh));
+    }
 }
 
 
@@ -106,6 +151,12 @@ void Foam::immersedBodyCoupling::project
     (
         nodePositions, triangles_, nodeVelocities, alphaWork_, UsolidWork_
     );
+    copyToFields();
+}
+
+
+void Foam::immersedBodyCoupling::copyToFields()
+{
     scalarField& alpha = alphaSolid_.primitiveFieldRef();
     vectorField& Us = Usolid_.primitiveFieldRef();
     forAll(alpha, celli)
@@ -161,6 +212,262 @@ void Foam::immersedBodyCoupling::solidForces
         Pstream::listCombineGather(nodeForces, plusEqOp<vector2D>());
         Pstream::listCombineScatter(nodeForces);
     }
+}
+
+
+void Foam::immersedBodyCoupling::startStep
+(
+    const continuousView& view,
+    const UList<vector2D>& nodeVelocities,
+    const scalar dt
+)
+{
+    // Points of the view and their mean node velocities
+    const labelList& pointOfNode = view.pointOfNode();
+    const labelList& nNodes = view.nNodesOfPoint();
+    nNodes_ = nodeVelocities.size();
+    xStart_ = view.points();
+    vPoint_.setSize(xStart_.size());
+    vPoint_ = Zero;
+    forAll(pointOfNode, n)
+    {
+        vPoint_[pointOfNode[n]] += nodeVelocities[n];
+    }
+    xEnd_.setSize(xStart_.size());
+    forAll(vPoint_, p)
+    {
+        vPoint_[p] /= nNodes[p];
+        xEnd_[p] = xStart_[p] + dt*vPoint_[p];
+    }
+
+    const List<triangleVertices>& tris = view.triangles();
+    viewTriangles_ = &tris;
+    projection_.project
+    (
+        xStart_, tris, vPoint_, alphaWork_, UsolidWork_, overlapsStart_
+    );
+    copyToFields();
+    solidAreaStart_ = alphaWork_*projection_.cellArea();
+    projection_.project(xEnd_, tris, vPoint_, alphaEnd_, work2D_, overlapsEnd_);
+    solidAreaEnd_ = alphaEnd_*projection_.cellArea();
+
+    // A cell's wall force goes half to the solid at the start, half to
+    // the solid at the end of the step (all to the one there is)
+    shareStart_.setSize(solidAreaStart_.size());
+    forAll(shareStart_, i)
+    {
+        const bool s = solidAreaStart_[i] > 0, e = solidAreaEnd_[i] > 0;
+        shareStart_[i] = s && e ? 0.5 : s ? 1 : 0;
+    }
+
+    // Wall pieces at the mid-step positions
+    work2D_.setSize(xStart_.size());
+    forAll(work2D_, p)
+    {
+        work2D_[p] = 0.5*(xStart_[p] + xEnd_[p]);
+    }
+    setWallPieces(view, work2D_);
+
+    // Apertures of every face over the linear motion from start to end;
+    // the two sides of a processor face (computed with the face reversed)
+    // take the same value, so that both see the same flux and neighbours
+    apertures_->update(xStart_, xEnd_, tris);
+    scalarField& faceAp = faceApertureWork_;
+    faceAp.setSize(mesh_.nFaces());
+    forAll(faceAp, f)
+    {
+        faceAp[f] = apertures_->aperture(f);
+    }
+    syncTools::syncFaceList(mesh_, faceAp, minEqOp<scalar>());
+    scalarField& ai = aperture_.primitiveFieldRef();
+    forAll(ai, f)
+    {
+        ai[f] = faceAp[f];
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        fvsPatchScalarField& ap = aperture_.boundaryFieldRef()[patchi];
+        const label start = mesh_.boundary()[patchi].patch().start();
+        forAll(ap, j)
+        {
+            ap[j] = faceAp[start + j];
+        }
+    }
+}
+
+
+namespace
+{
+    // Gas fraction 1 - alpha; what is left of a covered cell by round-off
+    // (the sum of the overlaps against its area) is no gas
+    Foam::tmp<Foam::scalarField> gasFraction(const Foam::scalarField& alpha)
+    {
+        auto tphi = Foam::tmp<Foam::scalarField>::New(alpha.size());
+        Foam::scalarField& phi = tphi.ref();
+        forAll(alpha, i)
+        {
+            const Foam::scalar f = 1 - alpha[i];
+            phi[i] = f > 1e-13 ? f : 0;
+        }
+        return tphi;
+    }
+}
+
+
+Foam::tmp<Foam::scalarField>
+Foam::immersedBodyCoupling::fluidFractionStart() const
+{
+    return gasFraction(alphaWork_);
+}
+
+
+Foam::tmp<Foam::scalarField>
+Foam::immersedBodyCoupling::fluidFractionEnd() const
+{
+    return gasFraction(alphaEnd_);
+}
+
+
+void Foam::immersedBodyCoupling::setWallPieces
+(
+    const continuousView& view,
+    const UList<vector2D>& x
+)
+{
+    pieceCell_.clear();
+    pieceNodes_.clear();
+    pieceMid_.clear();
+    pieceArea_.clear();
+    pieceAreaSum_.setSize(mesh_.nCells());
+    pieceAreaSum_ = Zero;
+    pieceLength_.setSize(mesh_.nCells());
+    pieceLength_ = 0;
+
+    const edgeList& edges = view.boundaryEdges();
+    const labelList& edgeTriangle = view.boundaryEdgeTriangle();
+    const labelList& edgeLocal = view.boundaryEdgeLocalEdge();
+    forAll(edges, e)
+    {
+        const vector2D& a = x[edges[e].start()];
+        const vector2D& b = x[edges[e].end()];
+        const label t = edgeTriangle[e], k = edgeLocal[e];
+        const label na = 3*t + k, nb = 3*t + (k + 1) % 3;
+        const vector2D d = b - a;
+        // The fragment is on the left: outward normal (dy, -dx); the
+        // pressure pushes along the inward one
+        const vector2D inward(-d.y(), d.x());
+        const scalar L = mag(d);
+        projection_.forEachSegmentPiece
+        (
+            a, b,
+            [&](const label celli, const scalar s0, const scalar s1)
+            {
+                pieceCell_.append(celli);
+                pieceNodes_.append(FixedList<label, 2>({na, nb}));
+                pieceMid_.append(0.5*(s0 + s1));
+                pieceArea_.append((s1 - s0)*inward);
+                pieceAreaSum_[celli] += (s1 - s0)*inward;
+                pieceLength_[celli] += (s1 - s0)*L;
+            }
+        );
+    }
+}
+
+
+template<class Visitor>
+void Foam::immersedBodyCoupling::forEachWallForce(const Visitor& visit) const
+{
+    forAll(pieceCell_, k)
+    {
+        const label c = pieceCell_[k];
+        const scalar len = mag(pieceArea_[k]);
+        const vector2D f =
+            wallPressure_[c]*pieceArea_[k]
+          + (len/pieceLength_[c])
+           *(wallForce_[c] - wallPressure_[c]*pieceAreaSum_[c]);
+        visit(c, pieceNodes_[k][0], (1 - pieceMid_[k])*f);
+        visit(c, pieceNodes_[k][1], pieceMid_[k]*f);
+    }
+    // Cells with a wall force but no piece (the wall is in them only in
+    // part of the step): over the solid in them (vertex k of triangle t
+    // of the view is discontinuous node 3t + k)
+    solidProjection::forEachPointWeight
+    (
+        overlapsStart_, solidAreaStart_, xStart_, *viewTriangles_,
+        [&](const label c, const label t, const label k, const scalar w)
+        {
+            if (pieceLength_[c] <= 0)
+            {
+                visit(c, 3*t + k, (w*shareStart_[c])*wallForce_[c]);
+            }
+        }
+    );
+    solidProjection::forEachPointWeight
+    (
+        overlapsEnd_, solidAreaEnd_, xEnd_, *viewTriangles_,
+        [&](const label c, const label t, const label k, const scalar w)
+        {
+            if (pieceLength_[c] <= 0)
+            {
+                visit(c, 3*t + k, (w*(1 - shareStart_[c]))*wallForce_[c]);
+            }
+        }
+    );
+}
+
+
+void Foam::immersedBodyCoupling::wallForces
+(
+    const vectorField& wallImpulse,
+    const scalarField& wallPressureImpulse,
+    const scalar dt,
+    List<vector2D>& nodeForces
+)
+{
+    const scalar scale = 1/(dt*depth_);
+    wallForce_.setSize(wallImpulse.size());
+    wallPressure_.setSize(wallImpulse.size());
+    forAll(wallForce_, i)
+    {
+        wallForce_[i] =
+            vector2D(scale*wallImpulse[i].x(), scale*wallImpulse[i].y());
+        wallPressure_[i] = wallPressureImpulse[i]/dt;
+    }
+    nodeForces.setSize(nNodes_);
+    nodeForces = Zero;
+    forEachWallForce
+    (
+        [&](const label, const label n, const vector2D& f)
+        {
+            nodeForces[n] += f;
+        }
+    );
+    if (Pstream::parRun())
+    {
+        // The same solid on every processor: sum the parts
+        Pstream::listCombineGather(nodeForces, plusEqOp<vector2D>());
+        Pstream::listCombineScatter(nodeForces);
+    }
+}
+
+
+void Foam::immersedBodyCoupling::wallWork
+(
+    const UList<vector2D>& workDisplacement,
+    scalarField& cellWork
+) const
+{
+    // The same nodal shares as wallForces times the displacements
+    cellWork.setSize(wallForce_.size());
+    cellWork = 0;
+    forEachWallForce
+    (
+        [&](const label c, const label n, const vector2D& f)
+        {
+            cellWork[c] += f & workDisplacement[n];
+        }
+    );
+    cellWork *= depth_;
 }
 
 

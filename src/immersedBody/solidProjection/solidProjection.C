@@ -67,7 +67,9 @@ Foam::solidProjection::solidProjection
     cellStart_(cellStart),
     cellArea_(orientAndMeasure(cellVertices_, cellStart_)),
     index_(cellVertices_, cellStart_),
-    lastTriangle_(cellArea_.size(), -1)
+    lastTriangle_(cellArea_.size(), -1),
+    lastSegment_(cellArea_.size(), -1),
+    segmentTag_(0)
 {}
 
 
@@ -151,14 +153,25 @@ void Foam::solidProjection::project
     List<vector2D>& Usolid
 )
 {
+    project(points, triangles, pointVelocities, alphaSolid, Usolid, overlaps_);
+}
+
+
+void Foam::solidProjection::project
+(
+    const UList<vector2D>& points,
+    const UList<FixedList<label, 3>>& triangles,
+    const UList<vector2D>& pointVelocities,
+    scalarField& alphaSolid,
+    List<vector2D>& Usolid,
+    solidOverlaps& overlaps
+)
+{
     alphaSolid.setSize(nCells());
     Usolid.setSize(nCells());
     alphaSolid = 0;
     Usolid = Zero;
-    overlapCell_.clear();
-    overlapTriangle_.clear();
-    overlapArea_.clear();
-    overlapCentroid_.clear();
+    overlaps.clear();
     lastTriangle_ = -1;
 
     forAll(triangles, t)
@@ -210,10 +223,10 @@ void Foam::solidProjection::project
                 alphaSolid[celli] += area;
                 Usolid[celli] += area*u;
 
-                overlapCell_.append(celli);
-                overlapTriangle_.append(t);
-                overlapArea_.append(area);
-                overlapCentroid_.append(centroid);
+                overlaps.cell.append(celli);
+                overlaps.triangle.append(t);
+                overlaps.area.append(area);
+                overlaps.centroid.append(centroid);
             }
         );
     }
@@ -238,29 +251,54 @@ void Foam::solidProjection::distributeToPoints
     List<vector2D>& pointForces
 ) const
 {
-    forAll(overlapCell_, o)
-    {
-        const label celli = overlapCell_[o];
-        const scalar solidArea = alphaSolid[celli]*cellArea_[celli];
-        if (solidArea <= 0)
+    // Transpose of the velocity average of project()
+    const scalarField solidArea(alphaSolid*cellArea_);
+    forEachPointWeight
+    (
+        overlaps_, solidArea, points, triangles,
+        [&](const label celli, const label t, const label k, const scalar w)
         {
-            continue;
+            pointForces[triangles[t][k]] += w*cellForce[celli];
         }
-        // Transpose of the velocity average of project()
-        const vector2D f = cellForce[celli]*(overlapArea_[o]/solidArea);
-        const FixedList<label, 3>& tri = triangles[overlapTriangle_[o]];
-        const FixedList<scalar, 3> w = barycentric
-        (
-            overlapCentroid_[o],
-            points[tri[0]],
-            points[tri[1]],
-            points[tri[2]]
-        );
-        for (label k = 0; k < 3; ++k)
+    );
+}
+
+
+bool Foam::solidProjection::clipSegment
+(
+    const label celli,
+    const vector2D& a,
+    const vector2D& b,
+    scalar& s0,
+    scalar& s1
+) const
+{
+    // Parametric clipping by the half-planes of the counter-clockwise cell
+    const label start = cellStart_[celli], end = cellStart_[celli + 1];
+    const vector2D d = b - a;
+    s0 = 0;
+    s1 = 1;
+    for (label k = start; k < end && s0 < s1; ++k)
+    {
+        const vector2D& u = cellVertices_[k];
+        const vector2D& w = cellVertices_[k + 1 < end ? k + 1 : start];
+        const vector2D e = w - u;
+        const scalar f0 = e.x()*(a.y() - u.y()) - e.y()*(a.x() - u.x());
+        const scalar df = e.x()*d.y() - e.y()*d.x();
+        if (df == 0)
         {
-            pointForces[tri[k]] += w[k]*f;
+            if (f0 < 0) return false;
+        }
+        else if (df > 0)
+        {
+            s0 = max(s0, -f0/df);
+        }
+        else
+        {
+            s1 = min(s1, -f0/df);
         }
     }
+    return s1 > s0;
 }
 
 

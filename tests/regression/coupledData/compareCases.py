@@ -29,20 +29,21 @@ def internal(path):
     return np.array([float(t) for t in body.split()])
 
 
-a, b = sys.argv[1], sys.argv[2]
-fields = sys.argv[3:] or ["p", "rho", "U", "rhoU", "rhoE", "alpha.solid", "fluidFraction"]
-worst = 0.0
-for f in fields:
-    x, y = internal(f"{a}/{f}"), internal(f"{b}/{f}")
-    if x.shape != y.shape:
-        print(f"{f}: sizes differ {x.shape} {y.shape}")
-        sys.exit(1)
-    scale = max(np.abs(x).max(), 1e-300)
-    d = np.abs(x - y).max() / scale
+if __name__ == "__main__":
+    a, b = sys.argv[1], sys.argv[2]
+    fields = sys.argv[3:] or ["p", "rho", "U", "rhoU", "rhoE", "alpha.solid", "fluidFraction"]
+    worst = 0.0
+    for f in fields:
+        x, y = internal(f"{a}/{f}"), internal(f"{b}/{f}")
+        if x.shape != y.shape:
+            print(f"{f}: sizes differ {x.shape} {y.shape}")
+            sys.exit(1)
+        scale = max(np.abs(x).max(), 1e-300)
+        d = np.abs(x - y).max() / scale
+        worst = max(worst, d)
+        print(f"{f}: {d:.3e}")
+    sa, sb = numbers(f"{a}/uniform/femdemState"), numbers(f"{b}/uniform/femdemState")
+    d = np.abs(sa - sb).max() / max(np.abs(sa).max(), 1e-300) if sa.shape == sb.shape else np.inf
+    print(f"femdemState: {d:.3e}")
     worst = max(worst, d)
-    print(f"{f}: {d:.3e}")
-sa, sb = numbers(f"{a}/uniform/femdemState"), numbers(f"{b}/uniform/femdemState")
-d = np.abs(sa - sb).max() / max(np.abs(sa).max(), 1e-300) if sa.shape == sb.shape else np.inf
-print(f"femdemState: {d:.3e}")
-worst = max(worst, d)
-print(f"max {worst:.3e}")
+    print(f"max {worst:.3e}")

@@ -33,7 +33,8 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.environ.get(
     "JWLIBFOAM_TUTORIALS", os.path.join(os.path.dirname(__file__), "..", "..")),
     "jwlIbFoam", "common"))
-from blastPost import read_field, write_summary, figure, latest_time, log_table
+from blastPost import (read_field, write_summary, figure, latest_time, log_table,
+                       budget_table, solid_energy)
 
 here = os.path.dirname(os.path.abspath(__file__))
 quick = os.path.exists(os.path.join(here, ".quick"))
@@ -161,14 +162,11 @@ probe = np.loadtxt(os.path.join(here, "postProcessing", "boreholeProbe", "0", "p
 tP, pP = probe[:, 0], probe[:, 1]
 
 # Budget: gas + solid energy, gas mass
-rows = [l.split() for l in open(os.path.join(here, "postProcessing", "jwlIbFoam",
-                                             "0", "budget.dat"))
-        if not l.startswith("#")]
-b = np.array([[float(x) for x in r] for r in rows if len(r) == 19])
-Etot = b[:, 7] + b[:, 8:14].sum(axis=1)
+b = budget_table(os.path.join(here, "postProcessing", "jwlIbFoam", "0", "budget.dat"))
+Etot = b["gasEnergy"] + solid_energy(b)
 Echarge = Etot[0]                 # the products' energy dominates (air 0.3 %)
 Egain = (Etot[-1] - Etot[0]) / Echarge
-massDrift = abs(b[-1, 2] - b[0, 2]) / b[0, 2]
+massDrift = abs(b["gasMass"][-1] - b["gasMass"][0]) / b["gasMass"][0]
 tab = log_table(os.path.join(here, "log.jwlIbFoam"))
 
 # ---------------------------------------------------------------- figures

@@ -4,6 +4,7 @@ read_field(case, time, name): internal field of an ascii OpenFOAM field as a
 numpy array (scalars: shape (n,), vectors: shape (n, 3)); a uniform field
 needs n.
 read_exact(case, time): columns of postProcessing/exactRiemann/<time>/exact.dat
+budget_table(path), solid_energy(b): budget.dat columns by name;
 log_table(logfile): per-step (time, dt, maxP, mass, energy, minRho, minP)
     from a jwlIbFoam log
 write_summary(path, case, figures): summary.json as doc/developing.md says.
@@ -81,6 +82,31 @@ def log_table(logfile):
         if m:
             rows.append([float(x) for x in m.groups()])
     return np.array(rows)
+
+
+def budget_table(path):
+    """Columns of a jwlIbFoam budget.dat by the names of its header line
+    ('# per unit depth: time dt gasMass ...'), as a dict of arrays"""
+    names = None
+    with open(path) as fh:
+        for line in fh:
+            if not line.startswith("#"):
+                break
+            head = line[1:].split(":", 1)[-1].split()
+            if "time" in head:
+                names = head
+    if names is None:
+        raise RuntimeError(f"{path}: no header line with column names")
+    data = np.atleast_2d(np.loadtxt(path))
+    return {n: data[:, i] for i, n in enumerate(names)}
+
+
+def solid_energy(b):
+    """Solid energy of a budget table: kinetic, elastic, stored and
+    dissipated, minus the work of gravity"""
+    return (b["solidKinetic"] + b["solidElastic"] + b["solidJointStored"]
+            + b["solidFracture"] + b["solidDamping"] + b["solidContact"]
+            - b["solidGravityWork"])
 
 
 def figure(name, value, reference=None, tolerance=None, error=None,

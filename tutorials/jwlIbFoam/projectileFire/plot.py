@@ -93,14 +93,14 @@ def reflection_time(T, X, V, L, nSteps=4000):
 def solid_history(case):
     """Time, dt, projectile velocity and travel (from the solid momentum),
     gas + solid momentum, gas mass, from budget.dat."""
-    b = np.loadtxt(os.path.join(case, "postProcessing", "jwlIbFoam", "0",
-                                "budget.dat"))
-    t, dt = b[:, 0], b[:, 1]
-    v = b[:, 5] / (m * H)
+    b = bp.budget_table(os.path.join(case, "postProcessing", "jwlIbFoam", "0",
+                                     "budget.dat"))
+    t, dt = b["time"], b["dt"]
+    v = b["solidMomentumX"] / (m * H)
     x = np.concatenate(([0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))))
     # the first row is after one step: prepend the state at rest
     x += 0.5 * v[0] * t[0]
-    return t, dt, v, x, b[:, 3] + b[:, 5], b[:, 2]
+    return t, dt, v, x, b["gasMomentumX"] + b["solidMomentumX"], b["gasMass"]
 
 
 def block_mesh(case):
@@ -151,9 +151,9 @@ def energy_figure(label, case):
     conserved; the first row is one step after the start. The tolerance
     is loose: the cut cell behind the moving projectile is over-filled
     (README.md), which creates 1.6 to 2.4 % here at present."""
-    b = np.loadtxt(os.path.join(case, "postProcessing", "jwlIbFoam", "0",
-                                "budget.dat"))
-    e = b[:, 7:14].sum(axis=1)
+    b = bp.budget_table(os.path.join(case, "postProcessing", "jwlIbFoam", "0",
+                                     "budget.dat"))
+    e = b["gasEnergy"] + bp.solid_energy(b)
     return bp.figure(f"{label}: gas + solid energy change (relative)",
                      e[-1] / e[0] - 1, 0.0, 0.03)
 
