@@ -153,10 +153,19 @@ mpirun -np 2 jwlIbFoam -parallel > log.jwlIbFoam 2>&1 || { tail -5 log.jwlIbFoam
 reconstructPar -time '0.0001,0.001' > log.reconstructPar 2>&1 || { echo ">> reconstructPar failed <-- FAIL"; exit 1; }
 cd ..
 rm -rf serial100 && mkdir serial100 && cp -r serial/{0,constant,system} serial100/
-sed -i 's/^endTime .*/endTime         1e-4;/' serial100/system/controlDict
+sed -i 's/^endTime .*/endTime         1e-4;/; s/^writeInterval .*/writeInterval   25;/' serial100/system/controlDict
 (cd serial100 && jwlIbFoam > log.jwlIbFoam 2>&1) || { echo ">> serial 0.1 ms run failed <-- FAIL"; exit 1; }
 d=$(/usr/bin/python3 $compare serial100/0.0001 parallel/0.0001 | tail -1 | awk '{print $2}')
 check "2 ranks (METIS) vs serial at 0.1 ms (50 steps): max relative difference" $d 1e-8
-d=$(/usr/bin/python3 $compare serial/0.001 parallel/0.001 | tail -1 | awk '{print $2}')
-check "2 ranks (METIS) vs serial at 1 ms (500 steps): max relative difference" $d 1e-2
+d=$(/usr/bin/python3 - <<'PY'
+import numpy as np, budget
+# Gas content per cell (intrinsic state times fluid fraction): the state of
+# a sliver cell may differ much, its content not
+def content(t, f):
+    return budget.internal(f"{t}/{f}") * budget.internal(f"{t}/fluidFraction")
+print(max(np.abs(content("serial/0.001", f) - content("parallel/0.001", f)).max()
+          / np.abs(content("serial/0.001", f)).max() for f in ("rho", "rhoE")))
+PY
+)
+check "2 ranks (METIS) vs serial at 1 ms (500 steps): max difference of the cell gas contents (mass, energy) / largest" $d 1e-3
 exit $fail
