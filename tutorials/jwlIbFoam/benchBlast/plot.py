@@ -258,7 +258,7 @@ figs = [
     figure("gas mass drift (relative)", massDrift, 0, 1e-3, error=massDrift),
     figure("fragment areas / solid area (fragment partition)",
            fArea.sum() / area0.sum(), 1, 1e-6, relative=True),
-    figure("broken joints", b[-1, 16]),
+    figure("broken joints", b["brokenJoints"][-1]),
     figure("broken joint length [m]", brokenLength),
     figure("crack reach from the hole centre [m] (burden 0.15)", crackReach),
     figure("crushed zone radius (90 % of fragments < 6 mm) [m]", crushedRadius),
