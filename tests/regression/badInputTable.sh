@@ -318,6 +318,15 @@ prep misspeltCrackPressure box
 sed -i 's/^crackPressure /crackPresure /' constant/immersedBodyProperties
 check misspeltCrackPressure immersedBodyProperties "'crackPresure'" jwlIbFoam
 
+prep unknownCouplingMethod box
+echo 'method cutcell;' >> constant/immersedBodyProperties
+check unknownCouplingMethod immersedBodyProperties "cutcell" jwlIbFoam
+
+prep cutCellWithCrackPressure box
+sed -i 's/^crackPressure .*/crackPressure true;/' constant/immersedBodyProperties
+echo 'method cutCell;' >> constant/immersedBodyProperties
+check cutCellWithCrackPressure immersedBodyProperties "'crackPressure'" jwlIbFoam
+
 prep coupledMissingMaterial box
 sed -i 's/^    rock$/    granite/' constant/femdemProperties
 check coupledMissingMaterial femdemProperties "'rock'" jwlIbFoam

@@ -219,6 +219,14 @@ void Foam::blastFluidSolver::setGeometry()
     }
     nFaces_ = n;
 
+    coupledFace_.setSize(nFaces_ - nInternal_);
+    coupledFace_ = false;
+    forAll(bm, patchi)
+    {
+        if (patchKind_[patchi] != COUPLED) continue;
+        SubList<bool>(coupledFace_, bm[patchi].size(), patchStart_[patchi] - nInternal_) = true;
+    }
+
     own_.setSize(nFaces_);
     nei_.setSize(nInternal_);
     Sf_.setSize(nFaces_);
@@ -1047,7 +1055,7 @@ bool Foam::blastFluidSolver::stage(const scalar a, const scalar dt)
     }
     if (alphaSolidPtr_)
     {
-        scaleFluxesByFluidFraction();
+        scaleFluxes(faceFluidFraction_);
     }
     assembleResidual();
     if (alphaSolidPtr_)
@@ -1382,6 +1390,16 @@ void Foam::blastFluidSolver::prepareRetry
 }
 
 
+const Foam::scalar* Foam::blastFluidSolver::rkWeights() const
+{
+    // SSP Runge-Kutta (Shu & Osher): stage weights of the old state
+    static const scalar a1[] = {0};
+    static const scalar a2[] = {0, 0.5};
+    static const scalar a3[] = {0, 0.75, 1.0/3.0};
+    return RKorder_ == 1 ? a1 : RKorder_ == 2 ? a2 : a3;
+}
+
+
 void Foam::blastFluidSolver::advance(const scalar dt)
 {
     if (cutCells_)
@@ -1399,10 +1417,7 @@ void Foam::blastFluidSolver::advance(const scalar dt)
     }
 
     // SSP Runge-Kutta (Shu & Osher): stage weights of the old state
-    static const scalar a1[] = {0};
-    static const scalar a2[] = {0, 0.5};
-    static const scalar a3[] = {0, 0.75, 1.0/3.0};
-    const scalar* a = (RKorder_ == 1 ? a1 : RKorder_ == 2 ? a2 : a3);
+    const scalar* a = rkWeights();
 
     lowOrder_.primitiveFieldRef() = 0;
     anyLowOrder_ = false;

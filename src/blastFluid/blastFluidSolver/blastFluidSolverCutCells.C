@@ -59,13 +59,31 @@ void Foam::blastFluidSolver::contentFromState
     scalarField& cAlpha, scalarField& cAlphaRho1
 ) const
 {
-    cRho = rho_.primitiveField()*phi;
-    cRhoU = rhoU_.primitiveField()*phi;
-    cRhoE = rhoE_.primitiveField()*phi;
+    // Element by element into lists sized once (no temporaries per stage)
+    const label n = phi.size();
+    cRho.setSize(n);
+    cRhoU.setSize(n);
+    cRhoE.setSize(n);
+    const scalarField& rho = rho_.primitiveField();
+    const vectorField& rhoU = rhoU_.primitiveField();
+    const scalarField& rhoE = rhoE_.primitiveField();
+    for (label i = 0; i < n; ++i)
+    {
+        cRho[i] = rho[i]*phi[i];
+        cRhoU[i] = rhoU[i]*phi[i];
+        cRhoE[i] = rhoE[i]*phi[i];
+    }
     if (twoPhase_)
     {
-        cAlpha = alpha1Ptr_->primitiveField()*phi;
-        cAlphaRho1 = alphaRho1Ptr_->primitiveField()*phi;
+        cAlpha.setSize(n);
+        cAlphaRho1.setSize(n);
+        const scalarField& alpha = alpha1Ptr_->primitiveField();
+        const scalarField& ar1 = alphaRho1Ptr_->primitiveField();
+        for (label i = 0; i < n; ++i)
+        {
+            cAlpha[i] = alpha[i]*phi[i];
+            cAlphaRho1[i] = ar1[i]*phi[i];
+        }
     }
 }
 
@@ -119,8 +137,6 @@ void Foam::blastFluidSolver::redistribute
     }
     cutCellFields& w = srd_();
     const scalarField& phi = phiField.primitiveField();
-    const scalarField& V = mesh_.V();
-    const label nCells = mesh_.nCells();
 
     // Small cells: less than half open or closing with gas in them, and
     // the cells in 'force' (new ones); with forcedOnly those only
@@ -134,179 +150,178 @@ void Foam::blastFluidSolver::redistribute
           ? 1 : 0;
     }
     w.small.correctBoundaryConditions();
-    scalarField smallNbr, phiNbr;
-    coupledNeighbourValues(w.small, smallNbr);
-    coupledNeighbourValues(phiField, phiNbr);
+    coupledNeighbourValues(w.small, w.smallNbr);
+    coupledNeighbourValues(phiField, w.phiNbr);
 
-    // A face links small cell a to neighbour b if it is open and b has room
-    auto links = [&](const label f, const scalar smallA, const scalar phiB)
-    {
-        return smallA > 0 && aperture_[f] > 0 && phiB > 0;
-    };
-
-    // Neighbourhoods each cell belongs to (its own included)
-    scalarField& count = w.count.primitiveFieldRef();
-    count = 1;
-    for (label f = 0; f < nInternal_; ++f)
-    {
-        const label P = own_[f], N = nei_[f];
-        if (links(f, small[P], phi[N])) count[N] += 1;
-        if (links(f, small[N], phi[P])) count[P] += 1;
-    }
-    for (label cf = nInternal_; cf < nFaces_; ++cf)
-    {
-        const label b = cf - nInternal_, P = own_[cf];
-        if (phiNbr.size() && links(cf, smallNbr[b], phi[P])) count[P] += 1;
-    }
+    countNeighbourhoods(phi);
     if (!returnReduce(max(small) > 0, orOp<bool>()))
     {
         return;
     }
 
+    // The content components: mass, momentum, energy (material 1)
+    const label nComp = twoPhase_ ? 7 : 5;
+    auto component = [&](const label k, const label i) -> scalar&
+    {
+        switch (k)
+        {
+            case 0: return cRho[i];
+            case 1: return cRhoU[i].x();
+            case 2: return cRhoU[i].y();
+            case 3: return cRhoU[i].z();
+            case 4: return cRhoE[i];
+            case 5: return cAlphaRho1[i];
+            default: return cAlpha[i];
+        }
+    };
+
     // Every cell's share of volume and content per neighbourhood
+    const scalarField& V = mesh_.V();
+    const scalarField& count = w.count.primitiveField();
     scalarField& vol = w.volume.primitiveFieldRef();
-    scalarField& m = w.mass.primitiveFieldRef();
-    vectorField& mu = w.momentum.primitiveFieldRef();
-    scalarField& en = w.energy.primitiveFieldRef();
-    scalarField& m1 = w.mass1.primitiveFieldRef();
-    scalarField& v1 = w.volume1.primitiveFieldRef();
-    for (label i = 0; i < nCells; ++i)
+    forAll(vol, i)
     {
         const scalar s = V[i]/count[i];
         vol[i] = phi[i]*s;
-        m[i] = cRho[i]*s;
-        mu[i] = cRhoU[i]*s;
-        en[i] = cRhoE[i]*s;
-        if (twoPhase_)
+        for (label k = 0; k < nComp; ++k)
         {
-            m1[i] = cAlphaRho1[i]*s;
-            v1[i] = cAlpha[i]*s;
+            w.share[k].primitiveFieldRef()[i] = component(k, i)*s;
         }
     }
-    for
-    (
-        volScalarField* fld : {&w.count, &w.volume, &w.mass, &w.energy}
-    )
-    {
-        fld->correctBoundaryConditions();
-    }
-    w.momentum.correctBoundaryConditions();
-    if (twoPhase_)
-    {
-        w.mass1.correctBoundaryConditions();
-        w.volume1.correctBoundaryConditions();
-    }
-
-    // Neighbourhood sums of the small cells (volume, content); then the
-    // neighbourhood states replace the shares
-    scalarField volN(vol), mN(m), enN(en), m1N(m1), v1N(v1);
-    vectorField muN(mu);
-    {
-        scalarField volB, mB, enB, m1B, v1B;
-        vectorField muB;
-        coupledNeighbourValues(w.volume, volB);
-        coupledNeighbourValues(w.mass, mB);
-        coupledNeighbourValues(w.momentum, muB);
-        coupledNeighbourValues(w.energy, enB);
-        if (twoPhase_)
-        {
-            coupledNeighbourValues(w.mass1, m1B);
-            coupledNeighbourValues(w.volume1, v1B);
-        }
-        auto gather = [&](const label a, const label b)
-        {
-            volN[a] += vol[b]; mN[a] += m[b]; muN[a] += mu[b]; enN[a] += en[b];
-            if (twoPhase_) { m1N[a] += m1[b]; v1N[a] += v1[b]; }
-        };
-        for (label f = 0; f < nInternal_; ++f)
-        {
-            const label P = own_[f], N = nei_[f];
-            if (links(f, small[P], phi[N])) gather(P, N);
-            if (links(f, small[N], phi[P])) gather(N, P);
-        }
-        for (label cf = nInternal_; cf < nFaces_; ++cf)
-        {
-            const label b = cf - nInternal_, P = own_[cf];
-            if (phiNbr.size() && links(cf, small[P], phiNbr[b]))
-            {
-                volN[P] += volB[b]; mN[P] += mB[b]; muN[P] += muB[b];
-                enN[P] += enB[b];
-                if (twoPhase_) { m1N[P] += m1B[b]; v1N[P] += v1B[b]; }
-            }
-        }
-    }
-
-    // Neighbourhood states (per unit gas volume); a closing cell with no
-    // open neighbour keeps its content (reported as lost)
-    for (label i = 0; i < nCells; ++i)
-    {
-        if (volN[i] > 0)
-        {
-            const scalar r = 1/volN[i];
-            m[i] = r*mN[i]; mu[i] = r*muN[i]; en[i] = r*enN[i];
-            if (twoPhase_) { m1[i] = r*m1N[i]; v1[i] = r*v1N[i]; }
-        }
-        else if (small[i] > 0)
-        {
-            lostMass_ += cRho[i]*V[i];
-            lostEnergy_ += cRhoE[i]*V[i];
-            m[i] = 0; mu[i] = Zero; en[i] = 0; m1[i] = 0; v1[i] = 0;
-        }
-    }
-    w.mass.correctBoundaryConditions();
-    w.momentum.correctBoundaryConditions();
-    w.energy.correctBoundaryConditions();
-    if (twoPhase_)
-    {
-        w.mass1.correctBoundaryConditions();
-        w.volume1.correctBoundaryConditions();
-    }
+    w.count.correctBoundaryConditions();
+    w.volume.correctBoundaryConditions();
+    w.evaluateShares(nComp);
+    neighbourhoodStates(phi, nComp);
 
     // A cell's state: the mean of the states of its neighbourhoods
-    scalarField mB, enB, m1B, v1B;
-    vectorField muB;
-    coupledNeighbourValues(w.mass, mB);
-    coupledNeighbourValues(w.momentum, muB);
-    coupledNeighbourValues(w.energy, enB);
-    if (twoPhase_)
+    w.evaluateShares(nComp);
+    gatherNeighbourhoods(phi, nComp, true);
+    forAll(phi, i)
     {
-        coupledNeighbourValues(w.mass1, m1B);
-        coupledNeighbourValues(w.volume1, v1B);
+        const scalar s = phi[i]/count[i];
+        for (label k = 0; k < nComp; ++k)
+        {
+            component(k, i) = s*w.sum[k][i];
+        }
     }
-    mN = m; muN = mu; enN = en; m1N = m1; v1N = v1;
+}
+
+
+void Foam::blastFluidSolver::countNeighbourhoods(const scalarField& phi)
+{
+    cutCellFields& w = srd_();
+    const scalarField& small = w.small.primitiveField();
+    scalarField& count = w.count.primitiveFieldRef();
+    count = 1;
     for (label f = 0; f < nInternal_; ++f)
     {
         const label P = own_[f], N = nei_[f];
-        if (links(f, small[P], phi[N]))
+        if (srdLink(f, small[P], phi[N])) count[N] += 1;
+        if (srdLink(f, small[N], phi[P])) count[P] += 1;
+    }
+    for (label cf = nInternal_; cf < nFaces_; ++cf)
+    {
+        const label b = cf - nInternal_, P = own_[cf];
+        if (srdLink(cf, w.smallNbr[b], phi[P])) count[P] += 1;
+    }
+}
+
+
+void Foam::blastFluidSolver::gatherNeighbourhoods
+(
+    const scalarField& phi,
+    const label nComp,
+    const bool intoMembers
+)
+{
+    // Sums over the neighbourhood of each small cell (its own share and
+    // those of the neighbours it links to: intoMembers false) or over the
+    // neighbourhoods each cell belongs to (intoMembers true)
+    cutCellFields& w = srd_();
+    const scalarField& small = w.small.primitiveField();
+    for (label k = 0; k < nComp; ++k)
+    {
+        w.sum[k] = w.share[k].primitiveField();
+        coupledNeighbourValues(w.share[k], w.shareNbr[k]);
+    }
+    if (!intoMembers)
+    {
+        w.sumVolume = w.volume.primitiveField();
+        coupledNeighbourValues(w.volume, w.volumeNbr);
+    }
+
+    auto add = [&](const label a, const label b)
+    {
+        if (!intoMembers) w.sumVolume[a] += w.volume[b];
+        for (label k = 0; k < nComp; ++k)
         {
-            mN[N] += m[P]; muN[N] += mu[P]; enN[N] += en[P];
-            if (twoPhase_) { m1N[N] += m1[P]; v1N[N] += v1[P]; }
+            w.sum[k][a] += w.share[k][b];
         }
-        if (links(f, small[N], phi[P]))
+    };
+    for (label f = 0; f < nInternal_; ++f)
+    {
+        const label P = own_[f], N = nei_[f];
+        if (intoMembers)
         {
-            mN[P] += m[N]; muN[P] += mu[N]; enN[P] += en[N];
-            if (twoPhase_) { m1N[P] += m1[N]; v1N[P] += v1[N]; }
+            if (srdLink(f, small[P], phi[N])) add(N, P);
+            if (srdLink(f, small[N], phi[P])) add(P, N);
+        }
+        else
+        {
+            if (srdLink(f, small[P], phi[N])) add(P, N);
+            if (srdLink(f, small[N], phi[P])) add(N, P);
         }
     }
     for (label cf = nInternal_; cf < nFaces_; ++cf)
     {
         const label b = cf - nInternal_, P = own_[cf];
-        if (phiNbr.size() && links(cf, smallNbr[b], phi[P]))
+        const bool linked =
+            intoMembers
+          ? srdLink(cf, w.smallNbr[b], phi[P])
+          : srdLink(cf, small[P], w.phiNbr[b]);
+        if (linked)
         {
-            mN[P] += mB[b]; muN[P] += muB[b]; enN[P] += enB[b];
-            if (twoPhase_) { m1N[P] += m1B[b]; v1N[P] += v1B[b]; }
+            if (!intoMembers) w.sumVolume[P] += w.volumeNbr[b];
+            for (label k = 0; k < nComp; ++k)
+            {
+                w.sum[k][P] += w.shareNbr[k][b];
+            }
         }
     }
-    for (label i = 0; i < nCells; ++i)
+}
+
+
+void Foam::blastFluidSolver::neighbourhoodStates
+(
+    const scalarField& phi,
+    const label nComp
+)
+{
+    // Neighbourhood states (per unit gas volume) replace the shares; a
+    // closing cell with no open neighbour loses its content (reported)
+    gatherNeighbourhoods(phi, nComp, false);
+    cutCellFields& w = srd_();
+    const scalarField& small = w.small.primitiveField();
+    const scalarField& count = w.count.primitiveField();
+    forAll(phi, i)
     {
-        const scalar s = phi[i]/count[i];
-        cRho[i] = s*mN[i];
-        cRhoU[i] = s*muN[i];
-        cRhoE[i] = s*enN[i];
-        if (twoPhase_)
+        if (w.sumVolume[i] > 0)
         {
-            cAlphaRho1[i] = s*m1N[i];
-            cAlpha[i] = s*v1N[i];
+            const scalar r = 1/w.sumVolume[i];
+            for (label k = 0; k < nComp; ++k)
+            {
+                w.share[k].primitiveFieldRef()[i] = r*w.sum[k][i];
+            }
+        }
+        else if (small[i] > 0)
+        {
+            // The shares are content V/count: mass and energy are lost
+            lostMass_ += w.share[0][i]*count[i];
+            lostEnergy_ += w.share[4][i]*count[i];
+            for (label k = 0; k < nComp; ++k)
+            {
+                w.share[k].primitiveFieldRef()[i] = 0;
+            }
         }
     }
 }
@@ -395,23 +410,7 @@ void Foam::blastFluidSolver::fillEmptyCells()
 void Foam::blastFluidSolver::addWallTerms(const scalar a, const scalar dt)
 {
     const scalar b = 1 - a;
-    forAll(aperture_, f)
-    {
-        const scalar ap = aperture_[f];
-        F_.rho[f] *= ap;
-        F_.rhoU[f] *= ap;
-        F_.rhoE[f] *= ap;
-    }
-    if (twoPhase_)
-    {
-        forAll(aperture_, f)
-        {
-            const scalar ap = aperture_[f];
-            F_.rhoY1[f] *= ap;
-            F_.alpha[f] *= ap;
-            F_.uS[f] *= ap;
-        }
-    }
+    scaleFluxes(aperture_);
     assembleResidual();
 
     // Moving walls: no mass through them, the pressure pushes the gas and
@@ -461,12 +460,15 @@ bool Foam::blastFluidSolver::cutCellStage
     // phi0, later stages to phi1
     const scalarField& phiNow =
         s == 0 ? fluidFractionPtr_->primitiveField() : phiEndPtr_->primitiveField();
-    const label n = mesh_.nCells();
-    scalarField cRho(n), cRhoE(n), cAlpha, cAlphaRho1;
-    vectorField cRhoU(n);
+    scalarField& cRho = cRho_;
+    vectorField& cRhoU = cRhoU_;
+    scalarField& cRhoE = cRhoE_;
+    scalarField& cAlpha = cAlpha_;
+    scalarField& cAlphaRho1 = cAlphaRho1_;
     contentFromState(phiNow, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
 
     const scalar b = 1 - a;
+    const label n = mesh_.nCells();
     for (label i = 0; i < n; ++i)
     {
         cRho[i] = a*cRho0_[i] + b*(cRho[i] + dt*dRho_[i]);
@@ -497,10 +499,7 @@ bool Foam::blastFluidSolver::cutCellStage
 
 void Foam::blastFluidSolver::advanceCutCells(const scalar dt)
 {
-    static const scalar a1[] = {0};
-    static const scalar a2[] = {0, 0.5};
-    static const scalar a3[] = {0, 0.75, 1.0/3.0};
-    const scalar* a = (RKorder_ == 1 ? a1 : RKorder_ == 2 ? a2 : a3);
+    const scalar* a = rkWeights();
 
     fillEmptyCells();
     if (!primitivesCurrent_)
@@ -584,15 +583,6 @@ void Foam::blastFluidSolver::enableCutCells(const scalarField& phi)
         )
     );
     aperture_.setSize(nFaces_, 1);
-    coupledFace_.setSize(nFaces_ - nInternal_, false);
-    forAll(patchKind_, patchi)
-    {
-        if (patchKind_[patchi] != COUPLED) continue;
-        for (label j = 0; j < mesh_.boundary()[patchi].size(); ++j)
-        {
-            coupledFace_[patchStart_[patchi] - nInternal_ + j] = true;
-        }
-    }
     wallVector_.setSize(mesh_.nCells(), Zero);
     sweptVolume_.setSize(mesh_.nCells(), 0);
     wallWork_.setSize(mesh_.nCells(), 0);
@@ -608,14 +598,17 @@ void Foam::blastFluidSolver::setFluidFraction(const scalarField& phiNew)
 {
     volScalarField& phiField = fluidFractionPtr_();
     scalarField& phi = phiField.primitiveFieldRef();
-    const label n = mesh_.nCells();
-    scalarField cRho(n), cRhoE(n), cAlpha, cAlphaRho1;
-    vectorField cRhoU(n);
+    scalarField& cRho = cRho_;
+    vectorField& cRhoU = cRhoU_;
+    scalarField& cRhoE = cRhoE_;
+    scalarField& cAlpha = cAlpha_;
+    scalarField& cAlphaRho1 = cAlphaRho1_;
     contentFromState(phi, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
 
     // Cells that open or close exchange their content with their open
     // neighbours; the others keep theirs in the new volume
-    boolList changed(n, false);
+    boolList& changed = changed_;
+    changed.setSize(phi.size());
     bool any = false;
     forAll(phi, i)
     {
@@ -778,9 +771,11 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
     volScalarField& phiField = fluidFractionPtr_();
     const scalarField& phi = phiField.primitiveField();
     const scalarField& V = mesh_.V();
-    const label n = mesh_.nCells();
-    scalarField cRho(n), cRhoE(n), cAlpha, cAlphaRho1;
-    vectorField cRhoU(n);
+    scalarField& cRho = cRho_;
+    vectorField& cRhoU = cRhoU_;
+    scalarField& cRhoE = cRhoE_;
+    scalarField& cAlpha = cAlpha_;
+    scalarField& cAlphaRho1 = cAlphaRho1_;
     contentFromState(phi, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
     forAll(phi, i)
     {

@@ -207,9 +207,8 @@ void Foam::blastFluidSolver::setFaceFluidFraction()
 }
 
 
-void Foam::blastFluidSolver::scaleFluxesByFluidFraction()
+void Foam::blastFluidSolver::scaleFluxes(const scalarField& phif)
 {
-    const scalarField& phif = faceFluidFraction_;
     for (label f = 0; f < nFaces_; ++f)
     {
         F_.rho[f] *= phif[f];
@@ -379,16 +378,7 @@ void Foam::blastFluidSolver::updateFluidFraction()
     coupledNeighbourValues(phiField, phiNbr);
     coupledNeighbourValues(phiOldField, phiOldNbr);
 
-    boolList coupledFace(nFaces_ - nInternal_, false);
-    forAll(patchKind_, patchi)
-    {
-        if (patchKind_[patchi] != COUPLED) continue;
-        const label size = mesh_.boundary()[patchi].size();
-        for (label j = 0; j < size; ++j)
-        {
-            coupledFace[patchStart_[patchi] - nInternal_ + j] = true;
-        }
-    }
+    const boolList& coupledFace = coupledFace_;
 
     // Weights of the transfers across a face between cell a (changing) and
     // its neighbour b. Preferred: the change of the face's closed part seen

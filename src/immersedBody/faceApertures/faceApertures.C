@@ -22,6 +22,18 @@ namespace
         return u.x()*v.y() - u.y()*v.x();
     }
 
+    // Insertion sort of the few event times of a face-triangle pair
+    inline void sortSmall(scalar* t, const label n)
+    {
+        for (label i = 1; i < n; ++i)
+        {
+            const scalar v = t[i];
+            label j = i;
+            for (; j > 0 && t[j - 1] > v; --j) t[j] = t[j - 1];
+            t[j] = v;
+        }
+    }
+
     // Roots of c0 + c1 t + c2 t^2 strictly inside (0, 1), appended to t
     inline void addRoots
     (
@@ -150,7 +162,7 @@ Foam::scalar Foam::faceApertures::averageEdgeOverlap
             }
         }
     }
-    std::sort(t, t + n);
+    sortSmall(t, n);
     scalar sum = 0;
     for (label i = 0; i + 1 < n; ++i)
     {
@@ -228,7 +240,7 @@ Foam::scalar Foam::faceApertures::averageCoveredLength
         }
     }
     t[n++] = 1;
-    std::sort(t, t + n);
+    sortSmall(t, n);
 
     // Between events the covered length is linear for a translation (the
     // midpoint value is exact) and a smooth rational function otherwise,
@@ -376,33 +388,14 @@ Foam::scalar Foam::faceApertures::coveredLength
     const vector2D& c
 )
 {
-    // Parametric clipping of p0 + t (p1 - p0), t in [0, 1], by the three
-    // half-planes of the counter-clockwise triangle
+    // Parametric clipping by the counter-clockwise triangle
     const bool ccw = polygonClipping::cross(a, b, c) >= 0;
-    const vector2D* v[3] = {&a, ccw ? &b : &c, ccw ? &c : &b};
-    const vector2D d = p1 - p0;
-    scalar lo = 0, hi = 1;
-    for (label k = 0; k < 3 && lo < hi; ++k)
-    {
-        const vector2D& u = *v[k];
-        const vector2D& w = *v[(k + 1) % 3];
-        // Inside: cross(u, w, x) >= 0, linear in t along the segment
-        const scalar f0 = polygonClipping::cross(u, w, p0);
-        const scalar df = cross2(w - u, d);
-        if (df == 0)
-        {
-            if (f0 < 0) return 0;
-        }
-        else if (df > 0)
-        {
-            lo = max(lo, -f0/df);
-        }
-        else
-        {
-            hi = min(hi, -f0/df);
-        }
-    }
-    return hi > lo ? (hi - lo)*mag(d) : 0;
+    const vector2D tri[3] = {a, ccw ? b : c, ccw ? c : b};
+    scalar lo, hi;
+    return
+        polygonClipping::clipSegment(p0, p1, tri, 3, lo, hi)
+      ? (hi - lo)*mag(p1 - p0)
+      : 0;
 }
 
 

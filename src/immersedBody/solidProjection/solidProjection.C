@@ -273,32 +273,11 @@ bool Foam::solidProjection::clipSegment
     scalar& s1
 ) const
 {
-    // Parametric clipping by the half-planes of the counter-clockwise cell
-    const label start = cellStart_[celli], end = cellStart_[celli + 1];
-    const vector2D d = b - a;
-    s0 = 0;
-    s1 = 1;
-    for (label k = start; k < end && s0 < s1; ++k)
-    {
-        const vector2D& u = cellVertices_[k];
-        const vector2D& w = cellVertices_[k + 1 < end ? k + 1 : start];
-        const vector2D e = w - u;
-        const scalar f0 = e.x()*(a.y() - u.y()) - e.y()*(a.x() - u.x());
-        const scalar df = e.x()*d.y() - e.y()*d.x();
-        if (df == 0)
-        {
-            if (f0 < 0) return false;
-        }
-        else if (df > 0)
-        {
-            s0 = max(s0, -f0/df);
-        }
-        else
-        {
-            s1 = min(s1, -f0/df);
-        }
-    }
-    return s1 > s0;
+    return polygonClipping::clipSegment
+    (
+        a, b, &cellVertices_[cellStart_[celli]],
+        cellStart_[celli + 1] - cellStart_[celli], s0, s1
+    );
 }
 
 

@@ -4,35 +4,22 @@ conservation figures of a coupled run.
     budget.py [budget.dat]   -> columns as a dict of numpy arrays (import)
 Columns are found by the names in the header line
 ('# per unit depth: time dt gasMass ...')."""
+import os
 import sys
 
 import numpy as np
 
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path[:0] = [here, os.path.join(here, "..", "..", "..", "tutorials", "jwlIbFoam", "common")]
+import blastPost  # noqa: E402 (budget_table, solid_energy)
+from compareCases import internal  # noqa: E402,F401 (ASCII field reader)
+
 
 def load(path="postProcessing/jwlIbFoam/0/budget.dat"):
-    names = None
-    with open(path) as fh:
-        for line in fh:
-            if line.startswith("#"):
-                head = line[1:].split(":", 1)[-1].split()
-                if "time" in head:
-                    names = head
-            else:
-                break
-    if names is None:
-        raise SystemExit(f"{path}: no header line with column names")
-    data = np.atleast_2d(np.loadtxt(path))
-    return {n: data[:, i] for i, n in enumerate(names)}
+    return blastPost.budget_table(path)
 
 
-from compareCases import internal  # noqa: E402 (ASCII field reader)
-
-
-def solidEnergy(b):
-    """Mechanical energy of the solid plus what it dissipated or stored"""
-    return (b["solidKinetic"] + b["solidElastic"] + b["solidJointStored"]
-            + b["solidFracture"] + b["solidDamping"] + b["solidContact"]
-            - b["solidGravityWork"])
+solidEnergy = blastPost.solid_energy
 
 
 def drifts(b):
