@@ -146,6 +146,12 @@ int main(int argc, char *argv[])
     #include "createFields.H"
     #include "createSolid.H"
     const bool cutCells = hasSolid && fluid.cutCells();
+    if (cutCells)
+    {
+        // The gas pays the work of its wall forces over the displacement
+        // the solid's budget integrates them over
+        solidPtr->trackWorkDisplacement();
+    }
     #include "createTimeControls.H"
     #include "checkTimeControls.H"
     #include "createDiagnostics.H"
@@ -188,9 +194,15 @@ int main(int argc, char *argv[])
         {
             // The step's geometry: the solid now and moved on by dt v
             const clockValue t0(clockValue::now());
-            couplingPtr->startStep(solidPtr->view(), solidPtr->v(), dt);
+            couplingPtr->startStep
+            (
+                solidPtr->view(), solidPtr->x(), solidPtr->v(), dt
+            );
             const clockValue t1(clockValue::now());
-            fluid.setFluidFraction(couplingPtr->fluidFractionStart());
+            fluid.setFluidFraction
+            (
+                couplingPtr->fluidFractionStart(), couplingPtr->aperture()
+            );
             fluid.setEmbeddedBoundary
             (
                 couplingPtr->fluidFractionEnd(), couplingPtr->aperture()

@@ -1199,6 +1199,7 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     cutCells_(false),
     lostMass_(0),
     lostEnergy_(0),
+    spreadEnergy_(0),
     primitivesCurrent_(false)
 {
     readControls();

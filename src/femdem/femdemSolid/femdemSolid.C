@@ -318,6 +318,13 @@ void Foam::femdemSolid::step(const scalar dt)
             wl += fLoad_[i] & vm;
             wg += (g & vm)/im[i];
         }
+        if (workDisplacement_.size())
+        {
+            for (label i = 0; i < n; ++i)
+            {
+                workDisplacement_[i] += h*(vOld_[i] + v[i]);
+            }
+        }
         wTri_ += wt; wDamp_ += wd; wJoint_ += wj; wContact_ += wc;
         wExt_ += wl; wGravity_ += wg;
     }
@@ -333,8 +340,22 @@ void Foam::femdemSolid::step(const scalar dt)
 }
 
 
+void Foam::femdemSolid::trackWorkDisplacement()
+{
+    if (!trackEnergy_)
+    {
+        FatalErrorInFunction
+            << "the work displacement needs energy tracking: entry"
+            << " 'trackEnergy' of constant/femdemProperties must be true"
+            << exit(FatalError);
+    }
+    workDisplacement_.setSize(x_.size(), Zero);
+}
+
+
 Foam::label Foam::femdemSolid::advance(const scalar interval)
 {
+    workDisplacement_ = Zero;
     label n = max(label(std::ceil(interval/deltaT_*(1 - 1e-12))), 1);
     scalar dt = interval/n;
     for (label i = 0; i < n; ++i)
