@@ -4,9 +4,9 @@
 # joints dissipate (issue 17): it was -wJoint - (jointStored - jointStored0)
 # with the joint work of the symplectic Euler step, f_n.(v_n + v_n+1) dt/2,
 # balanced against the stored energy at x_n+1 instead of the staggered
-# energy that work telescopes to, so it swung negative (-3e-3 J/m, 10 % of
-# the stored energy) in an intact bar. Now (femdemSolid::
-# jointStoredStaggered, checkDamageOnset):
+# energy that work telescopes to, so it swung negative (-1.1e-4 J/m in the
+# undamaged bar below, -3.1e-3 J/m before the first break of a weaker
+# one). Now (femdemSolid::jointStoredStaggered, checkDamageOnset):
 #  - a bar pulled at one end (1 m/s, 0.3 m/s) with joints too strong to be
 #    damaged: fracture exactly 0 at every log, for the munjiza and bilinear
 #    laws and two sub-step sizes (the joints' unbalanced work is in the

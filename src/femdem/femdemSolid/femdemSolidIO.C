@@ -72,9 +72,11 @@ Foam::scalar Foam::femdemSolid::jointStoredStaggered() const
     // sum of these telescopes to the change of the staggered energy
     // x_n.K x_n+1/2 = U(x_n) - f_n.(x_n+1 - x_n)/2, not of U(x_n+1): the
     // difference, of the order of the step, showed as a negative
-    // 'fracture' (-3e-3 J/m, 10 % of the stored energy, in an intact bar)
-    // before any joint was damaged. With it, the intact joints' energy
-    // balances to the nonlinearity of the joint forces.
+    // 'fracture' (to -3.1e-3 J/m, some 15 % of the stored energy, in a bar
+    // before its first joint broke; -1.1e-4 J/m in a bar never damaged).
+    // What remains (7e-5 of the stored energy, independent of the step)
+    // comes from the joint forces not being the exact gradient of the
+    // stored energy; checkDamageOnset leaves it in the residual.
     if (!trackEnergy_ || lastDt_ <= 0)
     {
         return cohesive_->storedEnergy(*this);
