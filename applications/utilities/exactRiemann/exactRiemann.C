@@ -32,6 +32,7 @@ Description
 #include "exactRiemannSolver.H"
 #include "OFstream.H"
 #include "IOmanip.H"
+#include <cmath>
 
 using namespace Foam;
 
@@ -55,7 +56,8 @@ exactRiemannSolver::state readState
     exactRiemannSolver::state s;
     s.rho = dict.get<scalar>("rho");
     s.u = dict.get<scalar>("u");
-    if (dict.found("e"))
+    const word pEntry(dict.found("e") ? "e" : "p");
+    if (pEntry == "e")
     {
         s.p = eos[index].p(s.rho, dict.get<scalar>("e"));
     }
@@ -64,6 +66,24 @@ exactRiemannSolver::state readState
         s.p = dict.get<scalar>("p");
     }
     s.side = 0;
+
+    // A state the solver cannot start from (its iteration would diverge
+    // or trap): name the entry
+    const char* bad =
+        !(s.rho > 0 && std::isfinite(s.rho)) ? "rho"
+      : !std::isfinite(s.u) ? "u"
+      : !std::isfinite(s.p) ? pEntry.c_str()
+      : !(eos[index].c2(s.rho, s.p) > 0) ? pEntry.c_str()
+      : nullptr;
+    if (bad)
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry '" << bad << "' of the state '" << dict.dictName()
+            << "': not a valid state of material '" << material << "' (rho "
+            << s.rho << ", u " << s.u << ", p " << s.p << "): rho must be"
+            << " positive and the squared sound speed positive, all finite"
+            << exit(FatalIOError);
+    }
     return s;
 }
 

@@ -163,7 +163,10 @@ Foam::femdemSolid::femdemSolid
     trackEnergy_(dict.getOrDefault<bool>("trackEnergy", false)),
     wTri_(0), wDamp_(0), wJoint_(0), wContact_(0), wGravity_(0), wExt_(0),
     energy0_(0),
-    jointStored0_(0)
+    jointStored0_(0),
+    lastDt_(0),
+    jointsDamaged_(false),
+    jointError_(0)
 {
     if (!(safety_ > 0 && safety_ <= 1))
     {
@@ -336,7 +339,13 @@ void Foam::femdemSolid::step(const scalar dt)
     }
 
     time_ = tNew;
+    lastDt_ = dt;
     ++step_;
+
+    if (trackEnergy_ && !jointsDamaged_)
+    {
+        checkDamageOnset();
+    }
 }
 
 
