@@ -10,6 +10,8 @@
 #  - the mid-step passing curve of equal-mass fragments sampled at the
 #    quantiles of a distribution gives back its x50 (the end-of-step curve
 #    used before is biased: printed for comparison)
+#  - Esen et al. crushed zone: unit invariance; the JWL preset table against
+#    the solver's TNT explosion-state pressure
 #  - ballistic landing against the exact range formulas
 #  - probe files of a restart joined in time order
 set -eu
@@ -67,6 +69,19 @@ check("  ... fitted n", f["n"], n, 1e-6)
 fe = bf.fit_rosin_rammler(xs, np.cumsum(dP), dP)
 print(f">> (end-of-step curve, as before: x50 {fe['x50']:.6g}, error "
       f"{abs(fe['x50'] - x50) / x50:.3g}; not checked)")
+
+# Esen et al. crushed zone: CZI = Pb^3/(K sigma_c^2) is dimensionless, so
+# the radius must not change when every stress is given in MPa instead of Pa
+r1, c1 = bf.esen_crushed_radius(2.3e8, 53.2e6, 19.5e9, 0.265, 0.015)
+r2, c2 = bf.esen_crushed_radius(2.3e2, 53.2, 19.5e3, 0.265, 0.015)
+check("Esen crushed radius, stresses in MPa vs Pa [m]", r2, r1, 1e-12)
+check("Esen r_c / r0 at CZI = 1", bf.esen_crushed_radius(1.0, 1.0, 1.265, 0.265, 0.02)[0] / 0.02,
+      0.812, 1e-12)
+# JWL presets of the post-processing = the solver's: TNT constant-volume
+# explosion state (V = 1, e = E0) 8.38 GPa (tntAirShockTube, README)
+tnt = dict(zip(bf.JWL_KEYS, bf.JWL_PRESETS["TNT"]))
+check("TNT constant-volume explosion pressure [Pa]", bf.jwl_pressure(tnt, 1.0, tnt["E0"]),
+      8.38e9, 1e-3)
 
 # Ballistics: from the floor at angle th, range v^2 sin(2 th)/g; horizontal
 # launch from height h: v sqrt(2 h/g)

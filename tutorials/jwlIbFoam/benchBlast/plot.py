@@ -47,25 +47,36 @@ import blastFigures as bf
 here = os.path.dirname(os.path.abspath(__file__))
 quick = os.path.exists(os.path.join(here, ".quick"))
 
-# Geometry (system/femdemMeshDict, system/blockMeshDict)
-HOLE = np.array([0.0, -0.15])
-R_HOLE = 0.015
-BENCH = (-0.3, 0.3, -0.4, 0.0)          # xmin xmax ymin ymax
-FLUID = (-0.3, 0.3, -0.4, 0.3)
-RHO_ROCK = 2000.0
+# Geometry, rock and charge from the case dictionaries: the first hole and
+# solid of system/femdemMeshDict, the first material of
+# constant/femdemProperties, the first charge radius of system/setChargeDict,
+# the JWL products of constant/thermophysicalProperties (preset + overrides)
+def _case(*p):
+    return os.path.join(here, *p)
+
+
+meshDict = _case("system", "femdemMeshDict")
+_hole = "holes." + bf.foam_keywords(meshDict, "holes")[0]
+HOLE = bf.foam_entry(meshDict, _hole + ".centre")[:2]
+R_HOLE = bf.foam_entry(meshDict, _hole + ".radius")
+_solid = "solids." + bf.foam_keywords(meshDict, "solids")[0]
+_lo, _hi = bf.foam_entry(meshDict, _solid + ".min"), bf.foam_entry(meshDict, _solid + ".max")
+BENCH = (_lo[0], _hi[0], _lo[1], _hi[1])            # xmin xmax ymin ymax
+FLUID = (-0.3, 0.3, -0.4, 0.3)                      # system/blockMeshDict
+solidDict = _case("constant", "femdemProperties")
+_mat = "materials." + bf.foam_keywords(solidDict, "materials")[0]
+E_ROCK, NU_ROCK, RHO_ROCK, FT_ROCK, C_ROCK, PHI_ROCK = (
+    bf.foam_entry(solidDict, f"{_mat}.{k}") for k in
+    ("E", "nu", "rho", "tensileStrength", "cohesion", "frictionAngle"))
+R_CHARGE = float(re.search(r"radius\s+([0-9.eE+-]+)\s*;",
+                           open(_case("system", "setChargeDict")).read()).group(1))
+TNT = bf.jwl_explosive(_case("constant", "thermophysicalProperties"), "products")
 FLIGHT_SPEED = 5.0                      # m/s: a fragment "in flight"
-# Rock (constant/femdemProperties) and charge (system/setChargeDict, TNT
-# preset of src/blastThermo JWL.C)
-E_ROCK, NU_ROCK, FT_ROCK = 19.5e9, 0.265, 3.5e6
-C_ROCK, PHI_ROCK = 17.6e6, 23.0
-R_CHARGE = 0.005
-TNT = dict(rho0=1630.0, A=371.2e9, B=3.231e9, R1=4.15, R2=0.95, omega=0.30,
-           E0=7.0e9, D=6930.0)
 # Kuz-Ram round: plan view of a long hole; assumptions (README.md)
 BENCH_HEIGHT = 1.0                      # m: charge length = bench height
 SPACING = BENCH[1] - BENCH[0]           # m: the block width between fixed sides
-BURDEN = 0.15
-ANFO_ENERGY = 3.7e6                     # J/kg: RWS = 100 (TNT/ANFO energy)
+BURDEN = BENCH[3] - HOLE[1]             # m: hole to the free face
+ANFO_ENERGY = 3.7e6                     # J/kg: RWS = 100 (explosive/ANFO energy)
 ROCK_MASS_DESCRIPTION = 50              # Cunningham RMD: massive, no joints
 
 
@@ -205,9 +216,7 @@ crushedRadius = ring[nCrushed]
 # products at their initial energy E0 filling the hole (relative volume
 # V = (r_hole/r_charge)^2, no work done)
 Vrel = (R_HOLE / R_CHARGE) ** 2
-Pb = (TNT["A"] * (1 - TNT["omega"] / (TNT["R1"] * Vrel)) * np.exp(-TNT["R1"] * Vrel)
-      + TNT["B"] * (1 - TNT["omega"] / (TNT["R2"] * Vrel)) * np.exp(-TNT["R2"] * Vrel)
-      + TNT["omega"] * TNT["E0"] / Vrel)
+Pb = bf.jwl_pressure(TNT, Vrel, TNT["E0"])
 sigmaC = bf.ucs_mohr_coulomb(C_ROCK, PHI_ROCK)
 rEsen, czi = bf.esen_crushed_radius(Pb, sigmaC, E_ROCK, NU_ROCK, R_HOLE)
 

@@ -50,11 +50,19 @@ Probes:
 Case input and animation:
   read_entry(path, key, default): a scalar entry of an OpenFOAM dictionary
       file (top level), the default when the file or the entry is missing
+  foam_entry(path, entry, default): any entry (a.b.c scoping) through
+      OpenFOAM's foamDictionary, as a number, a vector or a word;
+      foam_keywords(path, entry): the keywords of a sub-dictionary
+  jwl_explosive(thermoFile, material): the JWL coefficients of a products
+      material: the preset of its 'explosive' (the table of
+      src/blastThermo/equationOfState/JWL/JWL.C) with the entries the
+      dictionary overrides
   animate(...): GIF of the solid (fragments, broken joints) over the gas
       pressure at the written times (matplotlib PillowWriter, python3-pil)
 """
 import os
 import re
+import subprocess
 
 import numpy as np
 from scipy.optimize import least_squares
@@ -234,6 +242,56 @@ def read_entry(path, key, default):
         return float(m.group(1))
     except ValueError:
         raise ValueError(f"{path}: entry '{key}' is not a number: {m.group(1)}")
+
+
+def foam_entry(path, entry, default=None):
+    out = subprocess.run(["foamDictionary", "-entry", entry, "-value", path],
+                         capture_output=True, text=True)
+    if out.returncode != 0:
+        if default is None:
+            raise KeyError(f"{path}: no entry '{entry}'")
+        return default
+    v = out.stdout.strip()
+    try:
+        if v.startswith("("):
+            return np.array([float(x) for x in v.strip("()").split()])
+        return float(v)
+    except ValueError:
+        return v
+
+
+def foam_keywords(path, entry):
+    out = subprocess.run(["foamDictionary", "-entry", entry, "-keywords", path],
+                         capture_output=True, text=True, check=True)
+    return out.stdout.split()
+
+
+# JWL presets (rho0 kg/m3, A B Pa, R1 R2 omega, E0 J/m3, D m/s): the table
+# of src/blastThermo/equationOfState/JWL/JWL.C (LLNL Explosives Handbook)
+JWL_PRESETS = {
+    "TNT": (1630, 371.2e9, 3.231e9, 4.15, 0.95, 0.30, 7.0e9, 6930),
+    "PETN": (1770, 617.1e9, 16.926e9, 4.40, 1.20, 0.25, 10.1e9, 8300),
+    "CompB": (1717, 524.2e9, 7.678e9, 4.20, 1.10, 0.34, 8.5e9, 7980),
+    "HMX": (1891, 778.3e9, 7.071e9, 4.20, 1.00, 0.30, 10.5e9, 9110),
+}
+JWL_KEYS = ("rho0", "A", "B", "R1", "R2", "omega", "E0", "D")
+
+
+def jwl_explosive(thermoFile, material="products"):
+    name = foam_entry(thermoFile, material + ".explosive", "")
+    base = dict(zip(JWL_KEYS, JWL_PRESETS.get(name, (None,) * len(JWL_KEYS))))
+    out = {k: foam_entry(thermoFile, f"{material}.{k}", base[k] if base[k] is not None
+                         else None) for k in JWL_KEYS}
+    out["name"] = name or material
+    return out
+
+
+def jwl_pressure(c, Vrel, e):
+    """JWL pressure at relative volume Vrel and energy e per initial volume"""
+    w = c["omega"]
+    return (c["A"] * (1 - w / (c["R1"] * Vrel)) * np.exp(-c["R1"] * Vrel)
+            + c["B"] * (1 - w / (c["R2"] * Vrel)) * np.exp(-c["R2"] * Vrel)
+            + w * e / Vrel)
 
 
 def animate(path, steps, read_vtu, draw_solid, read_lines, case, shape, extent,
