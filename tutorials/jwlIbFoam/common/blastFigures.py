@@ -303,7 +303,10 @@ def animate(path, steps, read_vtu, draw_solid, read_lines, case, shape, extent,
     from matplotlib.animation import PillowWriter
     from blastPost import read_field
     nx, ny = shape
-    fig, ax = plt.subplots(figsize=(6, 6.5))
+    fig, ax = plt.subplots(figsize=(6.5, 6.5))
+    norm = plt.Normalize(4.5, 9.7)
+    fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap="inferno"), ax=ax,
+                 label="gas log10 p [Pa]", shrink=0.8)
     writer = PillowWriter(fps=fps)
     with writer.saving(fig, path, dpi=90):
         for i, (t, f) in enumerate(steps):
@@ -311,12 +314,12 @@ def animate(path, steps, read_vtu, draw_solid, read_lines, case, shape, extent,
             try:
                 p = read_field(case, t, "p", nx * ny).reshape(ny, nx)
                 ax.imshow(np.log10(np.maximum(p, 1.0)), origin="lower", extent=extent,
-                          cmap="inferno", vmin=5, vmax=9.7)
+                          cmap="inferno", norm=norm)
             except (FileNotFoundError, ValueError):
                 pass
             v = read_vtu(f)
             draw_solid(ax, v, read_lines(i),
-                       f"t = {t * 1e6:.0f} us: gas log10 p (5-9.7), fragments, cracks")
+                       f"t = {t * 1e6:.0f} us: gas pressure, fragments, broken joints")
             ax.set_ylim(extent[2], extent[3])
             writer.grab_frame()
     plt.close(fig)
