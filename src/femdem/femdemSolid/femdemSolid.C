@@ -136,6 +136,11 @@ void Foam::femdemSolid::markFreeEdges()
 }
 
 
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
+
+const Foam::femdemSolid* Foam::femdemSolid::active_ = nullptr;
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::femdemSolid::femdemSolid
@@ -208,11 +213,14 @@ Foam::femdemSolid::femdemSolid
         fTri_.setSize(n); fDamp_.setSize(n); fJoint_.setSize(n);
         fContact_.setSize(n); fLoad_.setSize(n); vOld_.setSize(n);
     }
+    active_ = this;
 }
 
 
 Foam::femdemSolid::~femdemSolid()
-{}
+{
+    if (active_ == this) active_ = nullptr;
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
