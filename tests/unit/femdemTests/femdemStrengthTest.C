@@ -449,3 +449,59 @@ TEST(femdemStrength, barInTensionFailsAtItsWeakestJoint)
         EXPECT_LT(mag(err), 0.03);
     }
 }
+
+
+TEST(femdemStrength, jointLoopUsesTheScaledCohesion)
+{
+    // One square cell: two triangles and one diagonal joint. Triangle B
+    // slides rigidly along the joint to 0.8 of its scaled peak slip: the
+    // pre-peak shear traction f_s g(s/s_p) (Munjiza g = 2x - x^2) depends
+    // on c_j = w c, so the joint loop's force must equal the traction of
+    // the scaled properties and differ from that of the unscaled ones
+    const scalar L = 0.01;
+    const triangleMesh mesh = triangleMesh::rectangle
+    (
+        vector2D(0, 0), vector2D(L, L), 1, 1, "rock"
+    );
+    scalar worst = 0, unscaledGap = GREAT;
+    for (const label seed : {1, 2, 3})
+    {
+        femdemSolid s(mesh, dict(strengthProps(weibull(4, seed))));
+        ASSERT_EQ(s.nJoints(), 1);
+        const cohesiveLaw& law = s.cohesive();
+        const femdemJointProperties& P = s.jointClasses()[s.jointClass()[0]];
+        const scalar w = s.jointStrength()[0];
+        femdemJointProperties Pw = P;
+        Pw.ft *= w;
+        Pw.c *= w;
+        const scalar h = s.jointLength0()[0];
+        const jointNodeList& n = s.topology().jointNodes()[0];
+        const vector2D t = (s.x()[n[1]] - s.x()[n[0]])/h;
+        const scalar slip = 0.8*law.slopeFactor()*h*Pw.c/Pw.ps;
+        const label tB = s.topology().jointTriangleB()[0];
+        for (label k = 0; k < 3; ++k) s.xRef()[3*tB + k] += slip*t;
+
+        List<vector2D> f(s.nNodes(), Zero);
+        law.addForces(s, f);
+        scalar D = 0, sigma, tau, Du = 0, sigmaU, tauU;
+        law.traction(Pw, h, 0, slip, D, sigma, tau);
+        law.traction(P, h, 0, slip, Du, sigmaU, tauU);
+        const scalar loop = (f[n[0]] & t)/(0.5*h);
+        worst = max(worst, mag(loop/tau - 1));
+        unscaledGap = min(unscaledGap, mag(loop/tauU - 1));
+        std::printf
+        (
+            ">> joint loop, w = %.4f: shear traction %.6g Pa, scaled-law"
+            " traction %.6g Pa, unscaled %.6g Pa\n", w, loop, tau, tauU
+        );
+    }
+    std::printf
+    (
+        ">> joint loop vs scaled-law traction: worst relative %.2e;"
+        " vs unscaled: at least %.2e\n", worst, unscaledGap
+    );
+    RecordProperty("loopVsScaledTraction", sci(worst));
+    RecordProperty("loopVsUnscaledTraction", sci(unscaledGap));
+    EXPECT_LT(worst, 1e-10);
+    EXPECT_GT(unscaledGap, 1e-3);
+}
