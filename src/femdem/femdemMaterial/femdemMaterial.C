@@ -55,7 +55,8 @@ Foam::femdemMaterial::femdemMaterial
 )
 :
     name(name),
-    law(elasticLaw::read(dict, defaultLaw))
+    law(elasticLaw::read(dict, defaultLaw)),
+    strength(dict)
 {
     E = readPositive(dict, "E");
     nu = dict.get<scalar>("nu");

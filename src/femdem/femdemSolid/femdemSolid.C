@@ -116,6 +116,41 @@ void Foam::femdemSolid::setJoints()
         const jointNodeList& n = topo_.jointNodes()[j];
         jointLength0_[j] = mag(x_[n[1]] - x_[n[0]]);
     }
+    setJointStrengths();
+}
+
+
+void Foam::femdemSolid::setJointStrengths()
+{
+    // Material whose distribution a pair of materials uses: the weaker
+    // (smaller f_t; on a tie the lower index, which does not depend on
+    // which side of the joint is A)
+    const label nMat = materials_.size();
+    labelList classSource(nMat*nMat);
+    bool any = false;
+    for (label a = 0; a < nMat; ++a)
+    {
+        any = any || materials_[a].strength.active();
+        for (label b = 0; b < nMat; ++b)
+        {
+            const scalar fa = materials_[a].ft, fb = materials_[b].ft;
+            classSource[a*nMat + b] =
+                (fa < fb || (fa == fb && a <= b)) ? a : b;
+        }
+    }
+    jointStrength_.clear();
+    if (!any) return;
+
+    const List<vector2D>& X = topo_.initialPoints();
+    const labelList& vertex = topo_.nodeVertex();
+    jointStrength_.setSize(jointClass_.size());
+    forAll(jointStrength_, j)
+    {
+        const jointNodeList& n = topo_.jointNodes()[j];
+        const strengthDistribution& sd =
+            materials_[classSource[jointClass_[j]]].strength;
+        jointStrength_[j] = sd.factor(X[vertex[n[0]]], X[vertex[n[1]]]);
+    }
 }
 
 

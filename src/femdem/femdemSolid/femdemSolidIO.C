@@ -213,7 +213,7 @@ std::size_t Foam::femdemSolid::memoryBytes() const
       + bytes(lawTriangles_[0]) + bytes(lawTriangles_[1])
       + bytes(x_) + bytes(v_) + bytes(f_) + bytes(invMass_) + bytes(fExt_)
       + bytes(jointClass_) + bytes(jointLength0_) + bytes(damage_)
-      + bytes(broken_)
+      + bytes(broken_) + bytes(jointStrength_)
       + bytes(fTri_) + bytes(fDamp_) + bytes(fJoint_) + bytes(fContact_)
       + bytes(fLoad_) + bytes(vOld_);
     for (const boundaryCondition& bc : bcs_)
