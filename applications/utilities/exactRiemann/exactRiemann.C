@@ -28,6 +28,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "caseChecks.H"
 #include "timeSelector.H"
 #include "exactRiemannSolver.H"
 #include "OFstream.H"
@@ -55,13 +56,31 @@ exactRiemannSolver::state readState
     exactRiemannSolver::state s;
     s.rho = dict.get<scalar>("rho");
     s.u = dict.get<scalar>("u");
+    if (!(s.rho > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'rho' is " << s.rho << "; the density must be > 0"
+            << exit(FatalIOError);
+    }
     if (dict.found("e"))
     {
         s.p = eos[index].p(s.rho, dict.get<scalar>("e"));
+        if (!(s.p > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'e' gives the pressure " << s.p << " with rho "
+                << s.rho << "; it must be > 0" << exit(FatalIOError);
+        }
     }
     else
     {
         s.p = dict.get<scalar>("p");
+        if (!(s.p > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'p' is " << s.p << "; the pressure must be > 0"
+                << exit(FatalIOError);
+        }
     }
     s.side = 0;
     return s;
@@ -100,6 +119,7 @@ int main(int argc, char *argv[])
             IOobject::MUST_READ, IOobject::NO_WRITE
         )
     );
+    caseChecks::checkInput(dict);
     const scalar x0 = dict.get<scalar>("x0");
     vector dir = dict.getOrDefault<vector>("direction", vector(1, 0, 0));
     dir /= mag(dir);

@@ -10,6 +10,7 @@
 #include "blastLimiters.H"
 #include "surfaceFields.H"
 #include "OStringStream.H"
+#include "caseChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -30,7 +31,7 @@ namespace
         const Foam::IOobject::readOption r
     )
     {
-        return Foam::IOobject
+        Foam::IOobject io
         (
             name,
             mesh.time().timeName(),
@@ -38,6 +39,12 @@ namespace
             r,
             Foam::IOobject::AUTO_WRITE
         );
+        // Numbers, list sizes and dimensions before OpenFOAM reads the file
+        if (r != Foam::IOobject::NO_READ)
+        {
+            Foam::caseChecks::checkFieldFile(io);
+        }
+        return io;
     }
 
 
@@ -134,6 +141,7 @@ namespace
 
 void Foam::blastFluidSolver::readControls()
 {
+    caseChecks::checkInput(fluidDict_);
     const word lim(fluidDict_.getOrDefault<word>("limiter", "vanLeer"));
     if (lim == "none") limiter_ = NONE;
     else if (lim == "minmod") limiter_ = MINMOD;
@@ -332,6 +340,41 @@ void Foam::blastFluidSolver::conservativeFromPrimitive()
         rhoU_.primitiveFieldRef()[i] = rho[i]*U[i];
         rhoE_.primitiveFieldRef()[i] = rhoe_[i] + 0.5*rho[i]*magSqr(U[i]);
     }
+}
+
+
+void Foam::blastFluidSolver::checkRestartState()
+{
+    checkFieldRange(rho_, 0, true, GREAT, "the density");
+    if (twoPhase_)
+    {
+        checkFieldRange(alpha1Ptr_(), 0, false, 1, "a volume fraction");
+        checkFieldRange(alphaRho1Ptr_(), 0, false, GREAT, "a partial density");
+    }
+    if (primitivesFromConservative(false))
+    {
+        return;
+    }
+    const scalarField& p = p_.primitiveField();
+    label bad = 0;
+    forAll(p, i)
+    {
+        if (!std::isfinite(p[i]) || !(p[i] > 0) || !(c_[i] > 0))
+        {
+            bad = i;
+            break;
+        }
+    }
+    FatalIOError
+    (
+        FUNCTION_NAME, __FILE__, __LINE__, rhoE_.objectPath(), -1, -1
+    )
+        << "entry 'internalField' of " << rho_.objectPath() << ", "
+        << rhoU_.objectPath() << " and " << rhoE_.objectPath()
+        << ": the state read for the restart is non-physical in cell "
+        << bad << " (centre " << mesh_.C()[bad] << "): rho = "
+        << rho_[bad] << ", rhoU = " << rhoU_[bad] << ", rhoE = "
+        << rhoE_[bad] << " give p = " << p[bad] << exit(FatalIOError);
 }
 
 
@@ -1245,22 +1288,28 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
         {
             FatalErrorInFunction
                 << "Restart from time " << mesh.time().timeName()
-                << ": rhoE present but alphaRho." << m1 << " missing"
-                << exit(FatalError);
+                << ": rhoE present but alphaRho." << m1 << " missing (no"
+                << " file " << alphaRho1Ptr_->objectPath() << " with a valid"
+                << " FoamFile header)" << exit(FatalError);
         }
     }
     else if (!rho_.headerOk())
     {
         FatalErrorInFunction
-            << "Single-material case: field 'rho' missing in time "
-            << mesh.time().timeName() << exit(FatalError);
+            << "Single-material case (one material in entry 'materials' of "
+            << thermoDict_.objectPath() << "): field 'rho' missing in time "
+            << mesh.time().timeName() << " (no file "
+            << rho_.objectPath() << " with a valid FoamFile header)"
+            << exit(FatalError);
     }
 
     if (restart && !rhoU_.headerOk())
     {
         FatalErrorInFunction
             << "Restart from time " << mesh.time().timeName()
-            << ": rhoE present but rhoU missing" << exit(FatalError);
+            << ": rhoE present but rhoU missing (no file "
+            << rhoU_.objectPath() << " with a valid FoamFile header)"
+            << exit(FatalError);
     }
 
     // Gradient fields (zeroGradient; coupled patches get their own type)
@@ -1316,6 +1365,7 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     {
         Info<< "blastFluidSolver: restart from the conservative state of time "
             << mesh.time().timeName() << endl;
+        checkRestartState();
     }
     else
     {

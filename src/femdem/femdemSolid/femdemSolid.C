@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "femdemSolid.H"
+#include "caseChecks.H"
 #include "cohesiveLaw.H"
 #include "contactLaw.H"
 #include <cstdlib>
@@ -165,6 +166,8 @@ Foam::femdemSolid::femdemSolid
     energy0_(0),
     jointStored0_(0)
 {
+    // Before any product of the values: 1e300 would overflow to inf
+    caseChecks::checkNumbers(dict);
     if (!(safety_ > 0 && safety_ <= 1))
     {
         FatalIOErrorInFunction(dict)
