@@ -9,7 +9,7 @@
 #   (4) the input (time directories, constant/, system/) is untouched.
 # One '>>' line per case, then '>> N cases, M failed'. The table of cases is
 # doc/badInput.md.
-. "$JWLIBFOAM_PROJECT/tests/regression/hostileInputBases.sh"
+. "$JWLIBFOAM_PROJECT/tests/regression/hostileInputBases.bash"
 
 # ----------------------------------------------------------------- cases
 nCases=0

@@ -68,18 +68,17 @@ void negativeCompoundSize(const fileName& file)
         pos = text.find("List<", pos + 5)
     )
     {
-        auto k = text.find('>', pos);
-        if (k != std::string::npos)
-        {
-            k = text.find_first_not_of(" \t\r\n", k + 1);
-        }
+        const auto gt = text.find('>', pos);
+        const auto k =
+            gt == std::string::npos
+          ? gt : text.find_first_not_of(" \t\r\n", gt + 1);
         if (k != std::string::npos && text[k] == '-')
         {
             const label line =
                 1 + std::count(text.begin(), text.begin() + k, '\n');
             FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file, line)
-                << "the size of the list '"
-                << text.substr(pos, k - pos + 2).c_str() << "...' at line "
+                << "the size of the list "
+                << text.substr(pos, gt - pos + 1).c_str() << " at line "
                 << line << " is negative" << exit(FatalIOError);
         }
     }
