@@ -58,44 +58,36 @@ import concurrent.futures as cf
 import hashlib, json, os, re, shutil, signal, subprocess, sys, time
 from collections import Counter, defaultdict
 
-# (base case, file relative to the case, program command)
-TARGETS = [
-    ("sod", f, ["jwlIbFoam"]) for f in (
-        "system/controlDict", "system/blastFluidProperties",
-        "system/fvSchemes", "system/fvSolution",
-        "constant/thermophysicalProperties", "0/U", "0/p", "0/rho")
-] + [
-    ("sod", "system/exactRiemannDict", ["exactRiemann"]),
-] + [
-    ("restart", f, ["jwlIbFoam"]) for f in (
-        "0.02/rhoU", "0.02/rhoE", "0.02/rho", "0.02/p", "0.02/U")
-] + [
-    ("tnt", "system/setChargeDict", ["setCharge"]),
-    ("tnt", "constant/thermophysicalProperties", ["setCharge"]),
-] + [
-    ("tntCharged", f, ["jwlIbFoam"]) for f in (
-        "constant/thermophysicalProperties", "0/alpha.products",
-        "0/rho.air", "0/rho.products", "0/p", "0/U")
-] + [
-    ("tntCharged", "system/decomposeParDict", ["decomposePar"]),
-    ("box", "system/femdemMeshDict", ["femdemMesh"]),
-] + [
-    ("box", f, ["jwlIbFoam"]) for f in (
-        "constant/femdemProperties", "constant/immersedBodyProperties",
-        "constant/solidMesh", "system/controlDict")
-] + [
-    ("boxRestart", f, ["jwlIbFoam"]) for f in (
-        "4e-06/uniform/femdemState", "4e-06/fluidFraction",
-        "4e-06/alpha.solid")
-] + [
-    ("bar", "system/femdemMeshDict", ["femdemMesh"]),
-    ("bar", "constant/femdemProperties", ["femdemFoam"]),
-    ("bar", "system/controlDict", ["femdemFoam"]),
-    ("bar", "constant/solidMesh", ["femdemFoam"]),
-    ("bar", "constant/solidMesh", ["femdemMeshCheck"]),
-    ("barRestart", "4e-06/femdemState", ["femdemFoam"]),
-    ("square", "square.msh", ["gmshToFemdem", "square.msh"]),
-]
+def each(base, cmd, *files):
+    """(base case, file relative to the case, program command) targets."""
+    return [(base, f, cmd.split()) for f in files]
+
+
+TARGETS = (
+    each("sod", "jwlIbFoam", "system/controlDict",
+         "system/blastFluidProperties", "system/fvSchemes", "system/fvSolution",
+         "constant/thermophysicalProperties", "0/U", "0/p", "0/rho")
+    + each("sod", "exactRiemann", "system/exactRiemannDict")
+    + each("restart", "jwlIbFoam", "0.02/rhoU", "0.02/rhoE", "0.02/rho",
+           "0.02/p", "0.02/U")
+    + each("tnt", "setCharge", "system/setChargeDict",
+           "constant/thermophysicalProperties")
+    + each("tntCharged", "jwlIbFoam", "constant/thermophysicalProperties",
+           "0/alpha.products", "0/rho.air", "0/rho.products", "0/p", "0/U")
+    + each("tntCharged", "decomposePar", "system/decomposeParDict")
+    + each("box", "femdemMesh", "system/femdemMeshDict")
+    + each("box", "jwlIbFoam", "constant/femdemProperties",
+           "constant/immersedBodyProperties", "constant/solidMesh",
+           "system/controlDict")
+    + each("boxRestart", "jwlIbFoam", "4e-06/uniform/femdemState",
+           "4e-06/fluidFraction", "4e-06/alpha.solid")
+    + each("bar", "femdemMesh", "system/femdemMeshDict")
+    + each("bar", "femdemFoam", "constant/femdemProperties",
+           "system/controlDict", "constant/solidMesh")
+    + each("bar", "femdemMeshCheck", "constant/solidMesh")
+    + each("barRestart", "femdemFoam", "4e-06/femdemState")
+    + each("square", "gmshToFemdem square.msh", "square.msh")
+)
 
 # Files read by OpenFOAM's own classes, where a repeated keyword is merged
 OPENFOAM_FILES = re.compile(

@@ -70,8 +70,10 @@ namespace
     }
 
 
-    //- Stop unless every value of the field read from its file (cells and
-    //  patch faces) lies in [lower, upper] (lowerOpen: (lower, upper]),
+    //- Stop unless every value of the field read from its file (cells and,
+    //  unless !patches, patch faces: a written restart state has patch
+    //  values the solver does not use) lies in [lower, upper] (lowerOpen:
+    //  (lower, upper]),
     //  naming the file, the entry and the cell or face. Called before the
     //  equation of state sees the values.
     void checkFieldRange
@@ -80,7 +82,8 @@ namespace
         const Foam::scalar lower,
         const bool lowerOpen,
         const Foam::scalar upper,
-        const char* what
+        const char* what,
+        const bool patches = true
     )
     {
         using namespace Foam;
@@ -115,6 +118,7 @@ namespace
         }
         forAll(f.boundaryField(), patchi)
         {
+            if (!patches) break;
             const fvPatchScalarField& pf = f.boundaryField()[patchi];
             forAll(pf, j)
             {
@@ -345,12 +349,9 @@ void Foam::blastFluidSolver::conservativeFromPrimitive()
 
 void Foam::blastFluidSolver::checkRestartState()
 {
-    checkFieldRange(rho_, 0, true, GREAT, "the density");
-    if (twoPhase_)
-    {
-        checkFieldRange(alpha1Ptr_(), 0, false, 1, "a volume fraction");
-        checkFieldRange(alphaRho1Ptr_(), 0, false, GREAT, "a partial density");
-    }
+    // The cells only: patch values of a written state are not used (alpha
+    // and alphaRho are clamped to their range as in any step)
+    checkFieldRange(rho_, 0, true, GREAT, "the density", false);
     if (primitivesFromConservative(false))
     {
         return;
