@@ -421,5 +421,27 @@ cd "$top" && rm -rf "cases/with space/bar" && mv cases/casePathWithSpace "cases/
 mkdir -p cases/casePathWithSpace && cd "cases/with space/bar"
 check casePathWithSpace "with space" "contains a space" femdemFoam
 
+# Messages that point to the cause (issue 17, item 4): materials in the
+# other order than the fields / setCharge; exactRiemann's bad states
+prep thermoMaterialOrder tntCharged
+sed -i 's/^materials .*/materials (air products);/' constant/thermophysicalProperties
+check thermoMaterialOrder "thermophysicalProperties" "'materials'" jwlIbFoam
+
+prep setChargeMaterialOrder tnt
+sed -i 's/^materials .*/materials (air products);/' constant/thermophysicalProperties
+check setChargeMaterialOrder "thermophysicalProperties" "'materials'" setCharge
+
+prep exactRiemannNegativeRho sod
+sed -i 's/^left .*/left { material air; rho -1; u 0; p 1; }/' system/exactRiemannDict
+check exactRiemannNegativeRho "exactRiemannDict" "'rho'" exactRiemann
+
+prep exactRiemannNegativePressure sod
+sed -i 's/^right .*/right { material air; rho 0.125; u 0; p -0.1; }/' system/exactRiemannDict
+check exactRiemannNegativePressure "exactRiemannDict" "'p'" exactRiemann
+
+prep exactRiemannNaNVelocity sod
+sed -i 's/^right .*/right { material air; rho 0.125; u nan; p 0.1; }/' system/exactRiemannDict
+check exactRiemannNaNVelocity "exactRiemannDict.right.u" "nan" exactRiemann
+
 echo ">> $nCases cases, $nFailed failed"
 [ $nFailed = 0 ]

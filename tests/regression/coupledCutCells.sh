@@ -16,7 +16,12 @@
 #    mirror states, 1 %), gas energy change against the work of the gas
 #    forces on the piston (1e-10);
 #  - restart bitwise; 2 ranks (METIS) = serial within 1e-8 over 50 steps
-#    (the difference grows later: figure printed at 500 steps).
+#    (the difference grows later: figure printed at 500 steps);
+#  - fracturing tube (the blastingCylinder tutorial at 0.8 mm cells, TNT in
+#    copper, 8 us): cracks open to the gas (gasView), the gas pays exactly
+#    the work the solid received (gas energy + solid external work
+#    conserved to 1e-10), the solid's own budget residual printed, restart
+#    bitwise, a restart without <time>/uniform/openJoints refused.
 cd "$JWLIBFOAM_TEST_DIR" || exit 1
 data=$JWLIBFOAM_PROJECT/tests/regression/coupledData
 compare=$data/compareCases.py
@@ -168,4 +173,56 @@ print(max(np.abs(content("serial/0.001", f) - content("parallel/0.001", f)).max(
 PY
 )
 check "2 ranks (METIS) vs serial at 1 ms (500 steps): max difference of the cell gas contents (mass, energy) / largest" $d 1e-3
+
+# Fracturing tube: the blasting cylinder, coarse, with cut cells
+rm -rf tube && cp -r "$JWLIBFOAM_PROJECT/tutorials/jwlIbFoam/blastingCylinder" tube
+cd tube
+rm -rf 0 && cp -r 0.orig 0
+sed -i 's/^n .*/n 60;/' system/blockMeshDict
+sed -i 's/^targetSize .*/targetSize 0.001;/' system/femdemMeshDict
+sed -i 's/^endTime .*/endTime 8e-6;/; s/^writeControl .*/writeControl timeStep;/; s/^writeInterval .*/writeInterval 50;/; s/^writePrecision .*/writePrecision 17;/' \
+    system/controlDict
+printf 'FoamFile { version 2.0; format ascii; class dictionary; object immersedBodyProperties; }\nmethod cutCell;\n' \
+    > constant/immersedBodyProperties
+for app in blockMesh femdemMesh setCharge jwlIbFoam; do
+    $app > log.$app 2>&1 || { tail -5 log.$app; echo ">> tube: $app failed <-- FAIL"; exit 1; }
+done
+read tLast tMid <<< "$(ls -d [1-9]* | sort -g | tail -2 | tac | tr '\n' ' ')"
+read dGas dSolid spread broken nOpen < <(/usr/bin/python3 - "$tLast" <<'PY'
+import sys, glob, numpy as np, budget
+b = budget.load(sorted(glob.glob("postProcessing/jwlIbFoam/*/budget.dat"))[0])
+S, W, G = budget.solidEnergy(b), b["solidExternalWork"], b["gasEnergy"]
+E0 = G[0] + S[0]
+gas = np.abs(G + W - G[0] - W[0]).max() / E0     # the coupling's account
+solid = np.abs(S - W - S[0] + W[0]).max() / E0   # FEMDEM's own budget
+text = open(sys.argv[1] + "/uniform/openJoints").read()
+n = int(text[text.index("}") + 1:].split("(")[0].split()[-1])
+print(gas, solid, abs(b["gasSpreadEnergy"][-1]) / E0, int(b["brokenJoints"][-1]), n)
+PY
+)
+cd ..
+echo ">> tube: broken joints $broken, joints open to the gas $nOpen (cutCell, 8 us)"
+check "tube: cracks open to the gas (open joints > 0, as 1/count)" \
+    "$(/usr/bin/python3 -c "print(1/max($nOpen, 1e-300))")" 1
+check "tube: |gas energy + solid external work - initial| / total energy (the coupling's account)" $dGas 1e-10
+check "tube: |solid energy - external work - initial| / total energy (FEMDEM's own budget, fracture)" $dSolid 1e-3
+check "tube: energy the gas spread over all gas / total energy" $spread 1e-3
+rm -rf tubeRestart && mkdir tubeRestart && cp -r tube/{0,constant,system,$tMid} tubeRestart/
+sed -i 's/^startFrom .*/startFrom latestTime;/' tubeRestart/system/controlDict
+(cd tubeRestart && jwlIbFoam > log.jwlIbFoam 2>&1) || { tail -5 tubeRestart/log.jwlIbFoam; echo ">> tube restart failed <-- FAIL"; exit 1; }
+# (the restarted time starts from the written name, so the last digit of
+# the time names may differ: compare the last writes)
+tLastR=$(cd tubeRestart && ls -d [1-9]* | sort -g | tail -1)
+d=$(/usr/bin/python3 $compare tube/$tLast tubeRestart/$tLastR | tail -1 | awk '{print $2}')
+check "tube: restart at $tMid vs one run, at $tLast: max relative difference" $d 1e-12
+rm -rf tubeNoOpen && mkdir tubeNoOpen && cp -r tube/{0,constant,system,$tMid} tubeNoOpen/
+sed -i 's/^startFrom .*/startFrom latestTime;/' tubeNoOpen/system/controlDict
+rm tubeNoOpen/$tMid/uniform/openJoints
+if (cd tubeNoOpen && jwlIbFoam > log.jwlIbFoam 2>&1); then
+    echo ">> tube: restart without uniform/openJoints ran <-- FAIL"; fail=1
+elif grep -q 'openJoints" is missing' tubeNoOpen/log.jwlIbFoam; then
+    echo ">> tube: restart without uniform/openJoints refused, naming the file"
+else
+    tail -5 tubeNoOpen/log.jwlIbFoam; echo ">> tube: wrong message without openJoints <-- FAIL"; fail=1
+fi
 exit $fail

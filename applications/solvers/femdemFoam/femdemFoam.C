@@ -18,7 +18,9 @@ Description
 
     Output:
     - <time>/femdemState at write times: the full state at full precision
-      (a run restarted from it is bit-exact);
+      (a run restarted from it is bit-exact), with <time>/uniform/time
+      (the exact time and the write schedule: restartableTime, so a restart
+      writes and logs at the times of an uninterrupted run);
     - VTK/femdem.vtu.series (+ .pvd): the continuous view of the solid with
       stress, velocity, damage, material, fragment; VTK/cracks_<i>.vtp: the
       broken joints as lines;
@@ -40,7 +42,9 @@ Description
                                    // lines (default 5, 0: every step)
     }
     \endverbatim
-    trackEnergy defaults to true in femdemFoam.
+    trackEnergy defaults to true in femdemFoam. With writeControl
+    adjustableRunTime the controlDict deltaT is clipped so that the steps
+    end on the write times.
 
     SIGINT (Ctrl-C) or SIGTERM: the state of the current step is written
     (a time directory with femdemState, restartable) and the run ends
@@ -59,6 +63,7 @@ Description
 #include "solidVtkWriter.H"
 #include "femdemOutput.H"
 #include "stopOnSignal.H"
+#include "restartableTime.H"
 #include "runProgress.H"
 #include "caseChecks.H"
 #include <cmath>
@@ -87,7 +92,7 @@ int main(int argc, char *argv[])
     caseChecks::checkLaunch(args);
     caseChecks::checkControlDict(args);
 
-    #include "createTime.H"
+    #include "createRestartableTime.H"
     caseChecks::checkStartTime(runTime);
 
     IOdictionary properties
@@ -304,8 +309,13 @@ int main(int argc, char *argv[])
             << solid.nBrokenJoints() << endl;
     };
 
-    scalar nextLog = runTime.value() + logInterval;
+    // Log times counted from the start of the write schedule (the first
+    // run's start time; restartableTime), so a restart logs at the times
+    // of an uninterrupted run
     const scalar eps = 1e-9*runTime.deltaTValue();
+    scalar nextLog = runTime.writeStart()
+      + logInterval
+       *(std::floor((runTime.value() - runTime.writeStart() + eps)/logInterval) + 1);
 
     stopOnSignal stop;
     runProgress progress(runTime, progressInterval);
@@ -313,6 +323,9 @@ int main(int argc, char *argv[])
     Info<< "Starting time loop" << nl << endl;
     while (runTime.run())
     {
+        // controlDict deltaT; with writeControl adjustableRunTime clipped
+        // so that the steps end on the write times
+        runTime.setDeltaT(runTime.controlDict().get<scalar>("deltaT"));
         ++runTime;
         const label nSub = solid.advance(runTime.deltaTValue());
 
@@ -340,6 +353,10 @@ int main(int argc, char *argv[])
             }
             Info<< "    wrote " << runTime.timePath()/"femdemState" << endl;
         }
+
+        // uniform/time at write times (exact time and write schedule for
+        // restarts)
+        runTime.write();
     }
 
     writeCracks(solid, postDir/"cracks.dat");

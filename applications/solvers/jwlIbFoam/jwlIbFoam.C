@@ -42,6 +42,11 @@ Description
     materials); with a solid: constant/femdemProperties (as femdemFoam),
     constant/solidMesh, constant/immersedBodyProperties (optional).
 
+    Restarts (startFrom latestTime) continue the exact time and the write
+    schedule of the first run (restartableTime): a run stopped by a signal
+    and restarted equals the uninterrupted one, also with writeControl
+    adjustableRunTime.
+
     Output: the gas fields and alpha.solid, U.solid at write times;
     <time>/uniform/femdemState (the solid, bit-exact; copied by
     reconstructPar); VTK/femdem.vtu.series with the solid and its cracks;
@@ -60,6 +65,7 @@ Description
 #include "immersedBodyCoupling.H"
 #include "solidVtkWriter.H"
 #include "stopOnSignal.H"
+#include "restartableTime.H"
 #include "caseChecks.H"
 #include "runProgress.H"
 #include "OFstream.H"
@@ -140,12 +146,18 @@ int main(int argc, char *argv[])
     // 0) or accept and then do nothing
     caseChecks::checkLaunch(args);
     caseChecks::checkControlDict(args);
-    #include "createTime.H"
+    #include "createRestartableTime.H"
     caseChecks::checkStartTime(runTime);
     #include "createMesh.H"
     #include "createFields.H"
     #include "createSolid.H"
     const bool cutCells = hasSolid && fluid.cutCells();
+    if (cutCells)
+    {
+        // The gas pays the work of its wall forces over the displacement
+        // the solid's budget integrates them over
+        solidPtr->trackWorkDisplacement();
+    }
     #include "createTimeControls.H"
     #include "checkTimeControls.H"
     #include "createDiagnostics.H"
@@ -188,9 +200,15 @@ int main(int argc, char *argv[])
         {
             // The step's geometry: the solid now and moved on by dt v
             const clockValue t0(clockValue::now());
-            couplingPtr->startStep(solidPtr->view(), solidPtr->v(), dt);
+            couplingPtr->startStep
+            (
+                solidPtr->view(), solidPtr->x(), solidPtr->v(), dt
+            );
             const clockValue t1(clockValue::now());
-            fluid.setFluidFraction(couplingPtr->fluidFractionStart());
+            fluid.setFluidFraction
+            (
+                couplingPtr->fluidFractionStart(), couplingPtr->aperture()
+            );
             fluid.setEmbeddedBoundary
             (
                 couplingPtr->fluidFractionEnd(), couplingPtr->aperture()

@@ -33,6 +33,7 @@ Description
 #include "exactRiemannSolver.H"
 #include "OFstream.H"
 #include "IOmanip.H"
+#include <cmath>
 
 using namespace Foam;
 
@@ -56,33 +57,41 @@ exactRiemannSolver::state readState
     exactRiemannSolver::state s;
     s.rho = dict.get<scalar>("rho");
     s.u = dict.get<scalar>("u");
-    if (!(s.rho > 0))
+    // (before the equation of state sees it: a density <= 0 can trap)
+    if (!(s.rho > 0 && std::isfinite(s.rho)))
     {
         FatalIOErrorInFunction(dict)
             << "entry 'rho' is " << s.rho << "; the density must be > 0"
             << exit(FatalIOError);
     }
-    if (dict.found("e"))
+    const word pEntry(dict.found("e") ? "e" : "p");
+    if (pEntry == "e")
     {
         s.p = eos[index].p(s.rho, dict.get<scalar>("e"));
-        if (!(s.p > 0))
-        {
-            FatalIOErrorInFunction(dict)
-                << "entry 'e' gives the pressure " << s.p << " with rho "
-                << s.rho << "; it must be > 0" << exit(FatalIOError);
-        }
     }
     else
     {
         s.p = dict.get<scalar>("p");
-        if (!(s.p > 0))
-        {
-            FatalIOErrorInFunction(dict)
-                << "entry 'p' is " << s.p << "; the pressure must be > 0"
-                << exit(FatalIOError);
-        }
     }
     s.side = 0;
+
+    // A state the solver cannot start from (its iteration would diverge
+    // or trap): name the entry
+    const char* bad =
+        !(s.rho > 0 && std::isfinite(s.rho)) ? "rho"
+      : !std::isfinite(s.u) ? "u"
+      : !std::isfinite(s.p) ? pEntry.c_str()
+      : !(eos[index].c2(s.rho, s.p) > 0) ? pEntry.c_str()
+      : nullptr;
+    if (bad)
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry '" << bad << "' of the state '" << dict.dictName()
+            << "': not a valid state of material '" << material << "' (rho "
+            << s.rho << ", u " << s.u << ", p " << s.p << "): rho must be"
+            << " positive and the squared sound speed positive, all finite"
+            << exit(FatalIOError);
+    }
     return s;
 }
 

@@ -171,8 +171,10 @@ int main(int argc, char *argv[])
     if (!jwl)
     {
         FatalIOErrorInFunction(thermo)
-            << "The first material '" << mixture.materials()[0]
-            << "' must use equationOfState JWL" << exit(FatalIOError);
+            << "entry 'materials' " << mixture.materials()
+            << ": the first material ('" << mixture.materials()[0]
+            << "') must be the detonation products (equationOfState JWL);"
+            << " list the products first" << exit(FatalIOError);
     }
     const scalar rho0 = jwl->rho0();
     const scalar E0 = jwl->E0();

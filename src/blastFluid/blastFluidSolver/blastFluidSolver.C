@@ -1243,6 +1243,7 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     cutCells_(false),
     lostMass_(0),
     lostEnergy_(0),
+    spreadEnergy_(0),
     primitivesCurrent_(false)
 {
     readControls();
@@ -1256,6 +1257,24 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     {
         const word& m1 = mixture_.materials()[0];
         const word& m2 = mixture_.materials()[1];
+        // Materials listed in the other order than the fields (e.g.
+        // setCharge's products first): name the entry, not the missing file
+        if
+        (
+            !readIO("alpha." + m1, mesh, IOobject::MUST_READ)
+                .typeHeaderOk<volScalarField>(true)
+         && readIO("alpha." + m2, mesh, IOobject::MUST_READ)
+                .typeHeaderOk<volScalarField>(true)
+        )
+        {
+            FatalErrorInFunction
+                << "constant/thermophysicalProperties: entry 'materials' ("
+                << m1 << ' ' << m2 << "): the volume fraction of the first"
+                << " material, " << mesh.time().timeName() << "/alpha." << m1
+                << ", is missing but alpha." << m2 << " exists: list the"
+                << " materials in the order of the fields (" << m2 << ' '
+                << m1 << ")" << exit(FatalError);
+        }
         alpha1Ptr_.reset
         (
             new volScalarField

@@ -135,6 +135,77 @@ void Foam::blastFluidSolver::redistribute
     {
         srd_.reset(new cutCellFields(mesh_));
     }
+    redistributePass
+    (
+        phiField, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1, force, forcedOnly
+    );
+    const label maxExtraPasses = 3;
+    for (label pass = 0; pass < maxExtraPasses; ++pass)
+    {
+        if (!markDeficientNeighbourhoods(phiField.primitiveField()))
+        {
+            break;
+        }
+        redistributePass
+        (
+            phiField, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1,
+            &srd_->extra, true
+        );
+    }
+}
+
+
+bool Foam::blastFluidSolver::markDeficientNeighbourhoods
+(
+    const scalarField& phi
+)
+{
+    cutCellFields& w = srd_();
+    const scalarField& small = w.small.primitiveField();
+    const scalarField& V = mesh_.V();
+    scalarField& deficient = w.deficient.primitiveFieldRef();
+    bool any = false;
+    forAll(deficient, i)
+    {
+        const bool d = small[i] > 0 && w.sumVolume[i] < 0.5*V[i];
+        deficient[i] = d ? 1 : 0;
+        w.extra[i] = d;
+        any = any || d;
+    }
+    if (!returnReduce(any, orOp<bool>()))
+    {
+        return false;
+    }
+    w.deficient.correctBoundaryConditions();
+    scalarField deficientNbr;
+    coupledNeighbourValues(w.deficient, deficientNbr);
+    for (label f = 0; f < nInternal_; ++f)
+    {
+        const label P = own_[f], N = nei_[f];
+        if (deficient[P] > 0 && srdLink(f, small[P], phi[N])) w.extra[N] = true;
+        if (deficient[N] > 0 && srdLink(f, small[N], phi[P])) w.extra[P] = true;
+    }
+    for (label cf = nInternal_; cf < nFaces_; ++cf)
+    {
+        const label b = cf - nInternal_, P = own_[cf];
+        if (deficientNbr[b] > 0 && srdLink(cf, w.smallNbr[b], phi[P]))
+        {
+            w.extra[P] = true;
+        }
+    }
+    return true;
+}
+
+
+void Foam::blastFluidSolver::redistributePass
+(
+    const volScalarField& phiField,
+    scalarField& cRho, vectorField& cRhoU, scalarField& cRhoE,
+    scalarField& cAlpha, scalarField& cAlphaRho1,
+    const boolList* force,
+    const bool forcedOnly
+)
+{
     cutCellFields& w = srd_();
     const scalarField& phi = phiField.primitiveField();
 
@@ -415,7 +486,13 @@ void Foam::blastFluidSolver::addWallTerms(const scalar a, const scalar dt)
 
     // Moving walls: no mass through them, the pressure pushes the gas and
     // does the work p dV; the impulse and work enter the Runge-Kutta
-    // combination like the state, I <- (1 - a)(I + dt S)
+    // combination like the state, I <- (1 - a)(I + dt S).
+    // A wall that recedes faster than the gas can follow (a cell opening
+    // in the step, a crack widening) cannot take more work than the gas
+    // there has: the wall pressure is limited so that the stage leaves the
+    // cell at least half of the internal energy it would have without the
+    // wall (theta p, theta in [0, 1]); the impulse and the work the wall
+    // receives are theta times as large, so the reaction stays exact
     const scalarField& p = p_.primitiveField();
     const scalarField& V = mesh_.V();
     solidImpulse_ *= b;
@@ -424,13 +501,29 @@ void Foam::blastFluidSolver::addWallTerms(const scalar a, const scalar dt)
     forAll(V, i)
     {
         if (magSqr(wallVector_[i]) == 0 && sweptVolume_[i] == 0) continue;
-        const vector force = p[i]*wallVector_[i];
+        scalar theta = 1;
         const scalar work = p[i]*sweptVolume_[i];
+        if (work > 0)
+        {
+            // Stage content without the wall's work, per cell volume (the
+            // momentum with the wall's force: the face pressures alone
+            // are not in balance)
+            const scalar m = a*cRho0_[i] + b*(cRho_[i] + dt*dRho_[i]);
+            const vector mU =
+                a*cRhoU0_[i]
+              + b*(cRhoU_[i] + dt*(dRhoU_[i] - p[i]*wallVector_[i]/V[i]));
+            const scalar E = a*cRhoE0_[i] + b*(cRhoE_[i] + dt*dRhoE_[i]);
+            const scalar ein = m > 0 ? E - 0.5*magSqr(mU)/m : 0;
+            const scalar cost = b*work/V[i];
+            theta = min(scalar(1), max(0.5*ein, scalar(0))/cost);
+        }
+        const scalar pw = theta*p[i];
+        const vector force = pw*wallVector_[i];
         dRhoU_[i] -= force/V[i];
-        dRhoE_[i] -= work/(dt*V[i]);
+        dRhoE_[i] -= theta*work/(dt*V[i]);
         solidImpulse_[i] += b*dt*force;
-        wallWork_[i] += b*work;
-        wallPressureImpulse_[i] += b*dt*p[i];
+        wallWork_[i] += b*theta*work;
+        wallPressureImpulse_[i] += b*dt*pw;
     }
     if (twoPhase_)
     {
@@ -439,6 +532,43 @@ void Foam::blastFluidSolver::addWallTerms(const scalar a, const scalar dt)
         {
             dAlpha_[i] += alpha[i]*sweptVolume_[i]/(dt*V[i]);
         }
+    }
+}
+
+
+void Foam::blastFluidSolver::mergeBadCells
+(
+    const volScalarField& phiField,
+    scalarField& cRho, vectorField& cRhoU, scalarField& cRhoE,
+    scalarField& cAlpha, scalarField& cAlphaRho1
+)
+{
+    // A gas content without positive mass or internal energy (a small
+    // cell whose neighbourhood could not absorb its wall force) is merged
+    // with its neighbours once more: mixing conserves mass, momentum and
+    // energy and can only lower the kinetic energy, so the internal energy
+    // of the merged gas is at least the sum of theirs
+    const scalarField& phi = phiField.primitiveField();
+    boolList& bad = changed_;
+    bad.setSize(phi.size());
+    for (label attempt = 0; attempt < 2; ++attempt)
+    {
+        bool any = false;
+        forAll(phi, i)
+        {
+            bad[i] =
+                phi[i] > 0
+             && !(cRho[i] > 0 && cRhoE[i] > 0.5*magSqr(cRhoU[i])/cRho[i]);
+            any = any || bad[i];
+        }
+        if (!returnReduce(any, orOp<bool>()))
+        {
+            return;
+        }
+        redistribute
+        (
+            phiField, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1, &bad, true
+        );
     }
 }
 
@@ -454,10 +584,9 @@ bool Foam::blastFluidSolver::cutCellStage
     {
         return false;
     }
-    addWallTerms(a, dt);
 
     // Content of the stage's state: at the start of the step it refers to
-    // phi0, later stages to phi1
+    // phi0, later stages to phi1 (the wall terms look at it)
     const scalarField& phiNow =
         s == 0 ? fluidFractionPtr_->primitiveField() : phiEndPtr_->primitiveField();
     scalarField& cRho = cRho_;
@@ -466,6 +595,7 @@ bool Foam::blastFluidSolver::cutCellStage
     scalarField& cAlpha = cAlpha_;
     scalarField& cAlphaRho1 = cAlphaRho1_;
     contentFromState(phiNow, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
+    addWallTerms(a, dt);
 
     const scalar b = 1 - a;
     const label n = mesh_.nCells();
@@ -489,6 +619,7 @@ bool Foam::blastFluidSolver::cutCellStage
     (
         phiEndPtr_(), cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1, &newCell_
     );
+    mergeBadCells(phiEndPtr_(), cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
     stateFromContent
     (
         phiEndPtr_->primitiveField(), cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1
@@ -594,7 +725,33 @@ void Foam::blastFluidSolver::enableCutCells(const scalarField& phi)
 }
 
 
-void Foam::blastFluidSolver::setFluidFraction(const scalarField& phiNew)
+void Foam::blastFluidSolver::loadApertures
+(
+    const surfaceScalarField& aperture
+)
+{
+    for (label f = 0; f < nInternal_; ++f)
+    {
+        aperture_[f] = aperture[f];
+    }
+    forAll(patchKind_, patchi)
+    {
+        if (patchKind_[patchi] == SKIP) continue;
+        const scalarField& ap = aperture.boundaryField()[patchi];
+        const label start = patchStart_[patchi];
+        forAll(ap, j)
+        {
+            aperture_[start + j] = ap[j];
+        }
+    }
+}
+
+
+void Foam::blastFluidSolver::setFluidFraction
+(
+    const scalarField& phiNew,
+    const surfaceScalarField& aperture
+)
 {
     volScalarField& phiField = fluidFractionPtr_();
     scalarField& phi = phiField.primitiveFieldRef();
@@ -606,20 +763,26 @@ void Foam::blastFluidSolver::setFluidFraction(const scalarField& phiNew)
     contentFromState(phi, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
 
     // Cells that open or close exchange their content with their open
-    // neighbours; the others keep theirs in the new volume
+    // neighbours, and so do small cells whose gas volume changed (the
+    // solid did not move exactly as predicted at the last step's start: a
+    // cell predicted at 1e-6 of its volume that is now at 1e-11 would
+    // compress its gas 1e5 times); the others keep theirs in the new volume
     boolList& changed = changed_;
     changed.setSize(phi.size());
     bool any = false;
     forAll(phi, i)
     {
-        changed[i] = (phi[i] > 0) != (phiNew[i] > 0);
+        changed[i] =
+            ((phi[i] > 0) != (phiNew[i] > 0))
+         || (phiNew[i] != phi[i] && min(phi[i], phiNew[i]) < 0.5);
         any = any || changed[i];
     }
     phi = phiNew;
     phiField.correctBoundaryConditions();
     if (returnReduce(any, orOp<bool>()))
     {
-        // The faces of the last step decide which neighbours are open
+        // The faces of the coming step decide which neighbours are open
+        loadApertures(aperture);
         redistribute
         (
             phiField, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1, &changed, true
@@ -767,7 +930,12 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
 {
     // Into the content, then merged like the step's content: a small cell
     // cannot take the work of its whole wall alone (the solid's motion
-    // within the step, e.g. elastic vibration, makes it differ from p dV)
+    // within the step, e.g. elastic vibration, makes it differ from p dV).
+    // A cell takes at most half of its internal energy either way: the
+    // difference can exceed the content of a cell that opened in the step
+    // (a crack that opened faster than predicted). The rest is spread over
+    // all gas in proportion to its internal energy (spreadEnergy, a small
+    // relative change everywhere instead of a negative energy in one cell)
     volScalarField& phiField = fluidFractionPtr_();
     const scalarField& phi = phiField.primitiveField();
     const scalarField& V = mesh_.V();
@@ -777,13 +945,40 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
     scalarField& cAlpha = cAlpha_;
     scalarField& cAlphaRho1 = cAlphaRho1_;
     contentFromState(phi, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
+    auto internal = [&](const label i)
+    {
+        return cRho[i] > 0 ? cRhoE[i] - 0.5*magSqr(cRhoU[i])/cRho[i] : 0;
+    };
+    scalar rest = 0;
     forAll(phi, i)
     {
-        // A cell without gas at the end: its neighbourhood takes it
-        cRhoE[i] += dE[i]/V[i];
+        const scalar cap = 0.5*max(internal(i), scalar(0));
+        const scalar d = min(max(dE[i]/V[i], -cap), cap);
+        cRhoE[i] += d;
+        rest += dE[i] - d*V[i];
+    }
+    scalar total = 0;
+    forAll(phi, i)
+    {
+        total += max(internal(i), scalar(0))*V[i];
+    }
+    reduce(rest, sumOp<scalar>());
+    reduce(total, sumOp<scalar>());
+    if (rest != 0 && total > 0)
+    {
+        const scalar r = rest/total;
+        forAll(phi, i)
+        {
+            cRhoE[i] += r*max(internal(i), scalar(0));
+        }
+        spreadEnergy_ += rest;
     }
     redistribute(phiField, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
     stateFromContent(phi, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
+
+    // The written state is the corrected one, checked now (a bad state
+    // stops the run before it is written)
+    primitivesFromConservative(true);
 }
 
 

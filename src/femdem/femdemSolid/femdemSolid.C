@@ -137,6 +137,11 @@ void Foam::femdemSolid::markFreeEdges()
 }
 
 
+// * * * * * * * * * * * * * * * Static Data * * * * * * * * * * * * * * * //
+
+const Foam::femdemSolid* Foam::femdemSolid::active_ = nullptr;
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::femdemSolid::femdemSolid
@@ -164,7 +169,10 @@ Foam::femdemSolid::femdemSolid
     trackEnergy_(dict.getOrDefault<bool>("trackEnergy", false)),
     wTri_(0), wDamp_(0), wJoint_(0), wContact_(0), wGravity_(0), wExt_(0),
     energy0_(0),
-    jointStored0_(0)
+    jointStored0_(0),
+    lastDt_(0),
+    jointsDamaged_(false),
+    jointError_(0)
 {
     // Before any product of the values: 1e300 would overflow to inf
     caseChecks::checkNumbers(dict);
@@ -208,11 +216,14 @@ Foam::femdemSolid::femdemSolid
         fTri_.setSize(n); fDamp_.setSize(n); fJoint_.setSize(n);
         fContact_.setSize(n); fLoad_.setSize(n); vOld_.setSize(n);
     }
+    active_ = this;
 }
 
 
 Foam::femdemSolid::~femdemSolid()
-{}
+{
+    if (active_ == this) active_ = nullptr;
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -321,6 +332,13 @@ void Foam::femdemSolid::step(const scalar dt)
             wl += fLoad_[i] & vm;
             wg += (g & vm)/im[i];
         }
+        if (workDisplacement_.size())
+        {
+            for (label i = 0; i < n; ++i)
+            {
+                workDisplacement_[i] += h*(vOld_[i] + v[i]);
+            }
+        }
         wTri_ += wt; wDamp_ += wd; wJoint_ += wj; wContact_ += wc;
         wExt_ += wl; wGravity_ += wg;
     }
@@ -332,12 +350,32 @@ void Foam::femdemSolid::step(const scalar dt)
     }
 
     time_ = tNew;
+    lastDt_ = dt;
     ++step_;
+
+    if (trackEnergy_ && !jointsDamaged_)
+    {
+        checkDamageOnset();
+    }
+}
+
+
+void Foam::femdemSolid::trackWorkDisplacement()
+{
+    if (!trackEnergy_)
+    {
+        FatalErrorInFunction
+            << "the work displacement needs energy tracking: entry"
+            << " 'trackEnergy' of constant/femdemProperties must be true"
+            << exit(FatalError);
+    }
+    workDisplacement_.setSize(x_.size(), Zero);
 }
 
 
 Foam::label Foam::femdemSolid::advance(const scalar interval)
 {
+    workDisplacement_ = Zero;
     label n = max(label(std::ceil(interval/deltaT_*(1 - 1e-12))), 1);
     scalar dt = interval/n;
     for (label i = 0; i < n; ++i)

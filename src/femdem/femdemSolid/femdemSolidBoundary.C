@@ -94,10 +94,13 @@ void Foam::femdemSolid::setBoundaryConditions(const dictionary& dict)
                 << exit(FatalIOError);
         }
 
-        // Faces and nodes of the patch
+        // Faces of the patch, and its nodes: every node at a vertex of the
+        // patch, not only those of the triangles owning its faces, so that
+        // a triangle touching the patch at one vertex only (a fan) obeys the
+        // condition too: otherwise its copy of the vertex is held by joint
+        // stiffness alone and drifts off a symmetry plane by round-off
         DynamicList<label> faces;
-        labelHashSet nodes;
-        DynamicList<label> nodeList;
+        labelHashSet vertices;
         forAll(topo_.boundaryPatch(), fi)
         {
             if (topo_.boundaryPatch()[fi] != bc.patch) continue;
@@ -106,8 +109,13 @@ void Foam::femdemSolid::setBoundaryConditions(const dictionary& dict)
             const label k = topo_.boundaryEdge()[fi];
             for (const label n : {3*t + k, 3*t + (k + 1) % 3})
             {
-                if (nodes.insert(n)) nodeList.append(n);
+                vertices.insert(topo_.nodeVertex()[n]);
             }
+        }
+        DynamicList<label> nodeList;
+        forAll(topo_.nodeVertex(), n)
+        {
+            if (vertices.found(topo_.nodeVertex()[n])) nodeList.append(n);
         }
         bc.faces.transfer(faces);
         if

@@ -94,7 +94,8 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
     // A misspelt optional entry would silently take its default
     const wordList valid
     ({
-        "method", "beta", "minFluidFraction", "crackPressure"
+        "method", "beta", "minFluidFraction", "crackPressure",
+        "crackOpening"
     });
     caseChecks::checkInput(dict);
     for (const entry& e : dict)
@@ -140,6 +141,7 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
                 << exit(FatalIOError);
         }
         apertures_.reset(new faceApertures(mesh));
+        gasView_.reset(new gasView(mesh, dict, depth_));
     }
 }
 
@@ -222,11 +224,14 @@ void Foam::immersedBodyCoupling::solidForces
 
 void Foam::immersedBodyCoupling::startStep
 (
-    const continuousView& view,
+    const continuousView& solidView,
+    const UList<vector2D>& nodePositions,
     const UList<vector2D>& nodeVelocities,
     const scalar dt
 )
 {
+    const continuousView& view = gasView_->update(solidView, nodePositions);
+
     // Points of the view and their mean node velocities
     const labelList& pointOfNode = view.pointOfNode();
     const labelList& nNodes = view.nNodesOfPoint();

@@ -10,6 +10,8 @@ License
 #include "Time.H"
 #include "PstreamReduceOps.H"
 #include "error.H"
+#include "Pstream.H"
+#include <fcntl.h>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -19,9 +21,31 @@ namespace
 // Number of the last signal received (0: none). Only written by the handler.
 volatile std::sig_atomic_t receivedSignal_ = 0;
 
+// Parallel run: on a signal, make the output non-blocking (see below)
+volatile std::sig_atomic_t parallel_ = 0;
+
 extern "C" void stopOnSignalHandler(int sigNum)
 {
     receivedSignal_ = sigNum;
+
+    // mpirun, when it is signalled itself, stops reading the ranks' output
+    // and forwards SIGTERM a second later (SIGKILL one more second later):
+    // the master, blocked writing its log into the full pipe, would never
+    // reach the write. The signal interrupts that write (no SA_RESTART);
+    // from now on log lines that do not fit are dropped instead of waiting
+    // (fcntl is async-signal-safe). Not in serial runs: the output may be
+    // the terminal, shared with the shell
+    if (parallel_)
+    {
+        for (const int fd : {1, 2})
+        {
+            const int flags = fcntl(fd, F_GETFL);
+            if (flags != -1)
+            {
+                fcntl(fd, F_SETFL, flags | O_NONBLOCK);
+            }
+        }
+    }
 }
 
 
@@ -51,9 +75,21 @@ Foam::stopOnSignal::stopOnSignal()
     stopped_(false)
 {
     receivedSignal_ = 0;
+    parallel_ = Pstream::parRun();
     installHandler(SIGINT, &oldInt_);
     installHandler(SIGTERM, &oldTerm_);
     installHandler(SIGUSR1, &oldUsr1_);
+
+    // A closed output (the reader of the log gone) must not end the run
+    // unwritten: mpirun, when it is signalled itself, stops reading the
+    // ranks' output at once and sends them SIGTERM only a second later; by
+    // default the master's next log line would raise SIGPIPE and kill it.
+    // Writes to the closed output fail instead, the run goes on
+    struct sigaction ignore;
+    ignore.sa_handler = SIG_IGN;
+    ignore.sa_flags = 0;
+    sigemptyset(&ignore.sa_mask);
+    sigaction(SIGPIPE, &ignore, &oldPipe_);
 }
 
 
@@ -64,6 +100,7 @@ Foam::stopOnSignal::~stopOnSignal()
     sigaction(SIGINT, &oldInt_, nullptr);
     sigaction(SIGTERM, &oldTerm_, nullptr);
     sigaction(SIGUSR1, &oldUsr1_, nullptr);
+    sigaction(SIGPIPE, &oldPipe_, nullptr);
 }
 
 

@@ -288,3 +288,52 @@ TEST(femdemSolver, twoMaterialsInterfaceRule)
     EXPECT_GT(nInterface, 0);
     EXPECT_NEAR(mass/(0.01*2500 + 0.01*7800), 1, 1e-12);
 }
+
+
+TEST(femdemSolver, velocityConditionHoldsEveryNodeOnItsPatch)
+{
+    // A block squeezed from the top on a symmetry-like bottom (v_y = 0):
+    // the triangles that touch the bottom at one vertex only (every second
+    // one of the structured mesh) must obey the condition too, exactly;
+    // before, their nodes were held by the joints alone and drifted
+    const triangleMesh mesh =
+        triangleMesh::rectangle(vector2D(0, 0), vector2D(0.04, 0.02), 8, 4, "rock");
+    femdemSolid solid
+    (
+        mesh,
+        dict
+        (
+            "cohesiveLaw munjiza; contactLaw potential; "
+            "materials { " + material("rock") + " } "
+            "boundaryConditions { bottom { type velocity; value (0 0);"
+            " components (y); } top { type velocity; value (0 -1);"
+            " components (y); rampTime 1e-5; } }"
+        )
+    );
+    const jointTopology& topo = solid.topology();
+    const List<vector2D>& points = topo.initialPoints();
+    label nOnBottom = 0, nFan = 0;
+    boolList onEdge(solid.x().size(), false);
+    forAll(topo.boundaryPatch(), fi)
+    {
+        const label t = topo.boundaryTriangle()[fi], k = topo.boundaryEdge()[fi];
+        onEdge[3*t + k] = onEdge[3*t + (k + 1) % 3] = true;
+    }
+    while (solid.time() < 2e-5)
+    {
+        solid.step();
+    }
+    scalar maxDrift = 0;
+    forAll(solid.x(), n)
+    {
+        if (mag(points[topo.nodeVertex()[n]].y()) > 1e-12) continue;
+        ++nOnBottom;
+        if (!onEdge[n]) ++nFan;
+        maxDrift = max(maxDrift, mag(solid.x()[n].y()));
+    }
+    RecordProperty("nodesOnBottom", std::to_string(nOnBottom));
+    RecordProperty("fanNodes", std::to_string(nFan));
+    RecordProperty("maxDrift", sci(maxDrift));
+    EXPECT_GT(nFan, 0) << "the mesh has no triangle touching the patch at a vertex";
+    EXPECT_EQ(maxDrift, 0);
+}

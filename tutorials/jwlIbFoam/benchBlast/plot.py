@@ -12,10 +12,17 @@ summary.json (blastPost.write_summary).
 Fragment sizes: area A of each fragment (sum of the initial areas of its
 triangles), equivalent size x = sqrt(4 A/pi) (diameter of the circle of the
 same area). The rock mass behind the blast (fragments holding a triangle on
-the fixed back or sides) is not a fragment. Mass-passing curve P(x) fitted
-by Rosin-Rammler P = 1 - exp(-(x/xc)^n) (least squares on
-ln(-ln(1 - P)) = n ln x - n ln xc), giving x50 = xc ln(2)^(1/n) and
-x80 = xc ln(5)^(1/n), compared with the measured percentiles.
+the fixed back or sides) is not a fragment. Mass-passing curve P(x) (mid-step,
+blastFigures.passing_curve) fitted by Rosin-Rammler and Swebrec by least
+squares on P itself, each point weighted by its mass fraction, over the
+fragments of at least two element sizes (element size h of a fragment: the
+side of the equilateral triangle of its triangles' mean area); the smaller
+ones are resolution-limited, kept in P (their mass is real) but not fitted.
+The Kuz-Ram / KCO prediction for the same round, the crushed and cracked
+zones with the Esen et al. (2003) estimate, the peak particle velocity at
+the solid probes (postProcessing/gauges) with the damage threshold
+f_t c_p/E, the throw (system/throwDict) and an animation (blast.gif; skipped
+with -noAnimation) come from blastFigures; assumptions in README.md.
 """
 import base64
 import json
@@ -35,17 +42,42 @@ sys.path.insert(0, os.path.join(os.environ.get(
     "jwlIbFoam", "common"))
 from blastPost import (read_field, write_summary, figure, latest_time, log_table,
                        budget_table, solid_energy)
+import blastFigures as bf
 
 here = os.path.dirname(os.path.abspath(__file__))
 quick = os.path.exists(os.path.join(here, ".quick"))
 
-# Geometry (system/femdemMeshDict, system/blockMeshDict)
-HOLE = np.array([0.0, -0.15])
-R_HOLE = 0.015
-BENCH = (-0.3, 0.3, -0.4, 0.0)          # xmin xmax ymin ymax
-FLUID = (-0.3, 0.3, -0.4, 0.3)
-RHO_ROCK = 2000.0
+# Geometry, rock and charge from the case dictionaries: the first hole and
+# solid of system/femdemMeshDict, the first material of
+# constant/femdemProperties, the first charge radius of system/setChargeDict,
+# the JWL products of constant/thermophysicalProperties (preset + overrides)
+def _case(*p):
+    return os.path.join(here, *p)
+
+
+meshDict = _case("system", "femdemMeshDict")
+_hole = "holes." + bf.foam_keywords(meshDict, "holes")[0]
+HOLE = bf.foam_entry(meshDict, _hole + ".centre")[:2]
+R_HOLE = bf.foam_entry(meshDict, _hole + ".radius")
+_solid = "solids." + bf.foam_keywords(meshDict, "solids")[0]
+_lo, _hi = bf.foam_entry(meshDict, _solid + ".min"), bf.foam_entry(meshDict, _solid + ".max")
+BENCH = (_lo[0], _hi[0], _lo[1], _hi[1])            # xmin xmax ymin ymax
+FLUID = (-0.3, 0.3, -0.4, 0.3)                      # system/blockMeshDict
+solidDict = _case("constant", "femdemProperties")
+_mat = "materials." + bf.foam_keywords(solidDict, "materials")[0]
+E_ROCK, NU_ROCK, RHO_ROCK, FT_ROCK, C_ROCK, PHI_ROCK = (
+    bf.foam_entry(solidDict, f"{_mat}.{k}") for k in
+    ("E", "nu", "rho", "tensileStrength", "cohesion", "frictionAngle"))
+R_CHARGE = float(re.search(r"radius\s+([0-9.eE+-]+)\s*;",
+                           open(_case("system", "setChargeDict")).read()).group(1))
+TNT = bf.jwl_explosive(_case("constant", "thermophysicalProperties"), "products")
 FLIGHT_SPEED = 5.0                      # m/s: a fragment "in flight"
+# Kuz-Ram round: plan view of a long hole; assumptions (README.md)
+BENCH_HEIGHT = 1.0                      # m: charge length = bench height
+SPACING = BENCH[1] - BENCH[0]           # m: the block width between fixed sides
+BURDEN = BENCH[3] - HOLE[1]             # m: hole to the free face
+ANFO_ENERGY = 3.7e6                     # J/kg: RWS = 100 (explosive/ANFO energy)
+ROCK_MASS_DESCRIPTION = 50              # Cunningham RMD: massive, no joints
 
 
 # ------------------------------------------------------------------ VTK I/O
@@ -101,15 +133,6 @@ def fragment_table(vtu, area0, fixedTri):
     return frag, area, vel, fixed
 
 
-def rosin_rammler(x, P):
-    """Fit on 0.02 < P < 0.98; returns xc, n."""
-    m = (P > 0.02) & (P < 0.98)
-    if m.sum() < 3:
-        return np.nan, np.nan
-    n, c = np.polyfit(np.log(x[m]), np.log(-np.log(1 - P[m])), 1)
-    return np.exp(-c / n), n
-
-
 # ------------------------------------------------------------------- main
 steps = series()
 t0, f0 = steps[0]
@@ -132,13 +155,33 @@ loose = ~fFixed
 A = fArea[loose]
 speed = np.linalg.norm(fVel[loose], axis=1)
 size = np.sqrt(4 * A / np.pi)
-order = np.argsort(size)
-Pass = np.cumsum(A[order]) / A.sum()
-xc, nRR = rosin_rammler(size[order], Pass)
-x50RR = xc * np.log(2) ** (1 / nRR)
-x80RR = xc * np.log(5) ** (1 / nRR)
-x50 = np.interp(0.5, Pass, size[order])
-x80 = np.interp(0.8, Pass, size[order])
+# Element size of each fragment: side of the equilateral triangle of the
+# mean area of its triangles; below two element sizes a fragment's size is
+# set by the mesh (resolution-limited)
+nTri = np.bincount(frag, minlength=len(fArea))
+hFrag = np.sqrt(4 / np.sqrt(3) * fArea / np.maximum(nTri, 1))[loose]
+limited = size < 2 * hFrag
+xs, Pass, dP = bf.passing_curve(size, A)
+lim = limited[np.argsort(size)]
+rr = bf.fit_rosin_rammler(xs[~lim], Pass[~lim], dP[~lim])
+sw = bf.fit_swebrec(xs[~lim], Pass[~lim], dP[~lim])
+x50 = bf.percentile(xs, Pass, 0.5)
+x80 = bf.percentile(xs, Pass, 0.8)
+# The fit used before (why it was 32 % off): linear regression of
+# ln(-ln(1 - P)) on ln x over every fragment, the end-of-step curve
+Pend = np.cumsum(dP)
+m = (Pend > 0.02) & (Pend < 0.98)
+nOld, cOld = np.polyfit(np.log(xs[m]), np.log(-np.log(1 - Pend[m])), 1)
+x50Old = np.exp(-cOld / nOld) * np.log(2) ** (1 / nOld)
+
+# Kuz-Ram / KCO for the same round (assumptions: README.md)
+chargePerMetre = TNT["rho0"] * np.pi * R_CHARGE ** 2
+Qhole = chargePerMetre * BENCH_HEIGHT
+qSpec = chargePerMetre / (BURDEN * SPACING)
+rws = 100 * TNT["E0"] / TNT["rho0"] / ANFO_ENERGY
+Arock = bf.cunningham_rock_factor(ROCK_MASS_DESCRIPTION, 0, RHO_ROCK, E_ROCK)
+kco = bf.kco(Arock, qSpec, Qhole, rws, BURDEN, SPACING, 2e3 * R_HOLE, 0.0,
+             BENCH_HEIGHT, BENCH_HEIGHT, SPACING)
 inFlight = speed > FLIGHT_SPEED
 crackLines = read_vtp_lines(os.path.join(here, "VTK", f"cracks_{len(steps) - 1}.vtp"))
 crackFile = os.path.join(here, "postProcessing", "jwlIbFoam",
@@ -147,15 +190,62 @@ cracks0 = np.loadtxt(crackFile, ndmin=2) if os.path.exists(crackFile) else np.ze
 if len(cracks0):
     mid = 0.5 * (cracks0[:, :2] + cracks0[:, 2:])
     rCrack = np.linalg.norm(mid - HOLE, axis=1)
+    lCrack = np.linalg.norm(cracks0[:, 2:] - cracks0[:, :2], axis=1)
     crackReach = rCrack.max()
-    brokenLength = np.linalg.norm(cracks0[:, 2:] - cracks0[:, :2], axis=1).sum()
+    brokenLength = lCrack.sum()
+    # Cracked zone: the circle about the hole holding 90 % of the broken
+    # joint length (the spalling at the free face included)
+    o = np.argsort(rCrack)
+    crackedRadius = np.interp(0.9, np.cumsum(lCrack[o]) / brokenLength, rCrack[o])
 else:
-    crackReach = brokenLength = 0.0
-# Crushed zone: triangles whose fragment is smaller than 4 triangles' area
-# of the hole refinement (about 6 mm equivalent size), by initial position
-small = (np.sqrt(4 * fArea[frag] / np.pi) < 0.006)
-rSmall = np.linalg.norm(cent0[small] - HOLE, axis=1)
-crushedRadius = np.percentile(rSmall, 90) if len(rSmall) else 0.0
+    crackReach = brokenLength = crackedRadius = 0.0
+# Crushed zone: rings about the hole (initial positions) in which at least
+# half of the rock ends in fragments smaller than one element size (pieces
+# of about one triangle); crushedRadius is the outer edge of the last such
+# ring counted from the hole wall
+hTri = np.sqrt(4 / np.sqrt(3) * area0)
+small = np.sqrt(4 * fArea[frag] / np.pi) < hTri
+rTri = np.linalg.norm(cent0 - HOLE, axis=1)
+ring = np.arange(R_HOLE, 0.3, 0.005)
+ringArea = np.histogram(rTri, ring, weights=area0)[0]
+ringSmall = np.histogram(rTri, ring, weights=area0 * small)[0]
+crushedFrac = ringSmall / np.maximum(ringArea, 1e-300)
+nCrushed = np.argmax(crushedFrac < 0.5) if (crushedFrac < 0.5).any() else len(crushedFrac)
+crushedRadius = ring[nCrushed]
+# Esen et al. (2003): borehole pressure of the decoupled charge = the JWL
+# products at their initial energy E0 filling the hole (relative volume
+# V = (r_hole/r_charge)^2, no work done)
+Vrel = (R_HOLE / R_CHARGE) ** 2
+Pb = bf.jwl_pressure(TNT, Vrel, TNT["E0"])
+sigmaC = bf.ucs_mohr_coulomb(C_ROCK, PHI_ROCK)
+rEsen, czi = bf.esen_crushed_radius(Pb, sigmaC, E_ROCK, NU_ROCK, R_HOLE)
+
+# Peak particle velocity at the solid probes, damage threshold f_t c_p/E
+cP = np.sqrt(E_ROCK * (1 - NU_ROCK) / ((1 + NU_ROCK) * (1 - 2 * NU_ROCK)) / RHO_ROCK)
+ppvCrit = bf.ppv_damage_threshold(FT_ROCK, E_ROCK, cP)
+gauges = bf.read_probes(os.path.join(here, "postProcessing", "gauges"))
+gaugePts = bf.probe_points(os.path.join(here, "postProcessing", "gauges"))
+nG = len(gaugePts)
+gaugeSpeed = np.stack([np.hypot(gauges[f"probe{i}_Ux"], gauges[f"probe{i}_Uy"])
+                       for i in range(nG)], 1)
+ppv = gaugeSpeed.max(axis=0)
+rGauge = np.linalg.norm(gaugePts - HOLE, axis=1)
+
+# Throw: ballistic landing of each loose fragment (system/throwDict)
+throwDict = os.path.join(here, "system", "throwDict")
+g = bf.read_entry(throwDict, "gravity", 9.81)
+zFloor = bf.read_entry(throwDict, "floorLevel", -0.5)
+cEnd = vEnd["Points"][:, :2][vEnd["triangles"]].mean(axis=1)
+fCent = np.stack([np.bincount(frag, area0 * cEnd[:, k], len(fArea))
+                  for k in range(2)], 1)[loose] / A[:, None]
+# Only fragments moving out of the face fly; the others are held by the
+# rock around them and stay where they are
+towardsFace = fVel[loose][:, 1] > 0
+land, tFlight = bf.ballistic_landing(fCent, np.zeros(len(A)),
+                                     fVel[loose] * towardsFace[:, None],
+                                     np.zeros(len(A)), zFloor, g)
+throwDist = land[:, 1] - BENCH[3]          # beyond the free face y = 0
+maxThrow = throwDist.max()
 
 # Borehole pressure (probe at the hole centre)
 probe = np.loadtxt(os.path.join(here, "postProcessing", "boreholeProbe", "0", "p"))
@@ -229,15 +319,28 @@ ax.grid(True, which="both", alpha=0.3)
 fig.tight_layout()
 fig.savefig(os.path.join(here, "boreholePressure.png"), dpi=130)
 
-fig, axs = plt.subplots(1, 2, figsize=(11, 4.2))
-xs = np.geomspace(size.min(), size.max(), 100)
-axs[0].semilogx(size[order] * 1e3, Pass * 100, "b.", ms=3, label="fragments")
-axs[0].semilogx(xs * 1e3, 100 * (1 - np.exp(-(xs / xc) ** nRR)), "k-",
-                label=f"Rosin-Rammler n = {nRR:.2f}, xc = {xc * 1e3:.1f} mm")
-axs[0].axvline(x50RR * 1e3, color="g", ls="--", label=f"x50 = {x50RR * 1e3:.1f} mm")
-axs[0].axvline(x80RR * 1e3, color="m", ls="--", label=f"x80 = {x80RR * 1e3:.1f} mm")
-axs[0].set_xlabel("equivalent size sqrt(4A/pi) [mm]"); axs[0].set_ylabel("passing by mass [%]")
-axs[0].legend(fontsize=8); axs[0].set_title(f"{loose.sum()} fragments at t = {tEnd * 1e6:.0f} us")
+fig, axs = plt.subplots(1, 2, figsize=(12, 4.6))
+xg = np.geomspace(xs.min(), max(xs.max(), sw["xmax"]) * 1.2, 200)
+ax = axs[0]
+ax.semilogx(xs[~lim] * 1e3, Pass[~lim] * 100, "b.", ms=3, label="fragments (fitted)")
+ax.semilogx(xs[lim] * 1e3, Pass[lim] * 100, ".", color="0.6", ms=3,
+            label="resolution-limited (< 2 element sizes, not fitted)")
+ax.semilogx(xg * 1e3, 100 * bf.rosin_rammler(xg, rr["x50"], rr["n"]), "k-",
+            label=f"Rosin-Rammler x50 {rr['x50'] * 1e3:.1f} mm, n {rr['n']:.2f} "
+                  f"(rms {rr['rms']:.3f})")
+ax.semilogx(xg * 1e3, 100 * bf.swebrec(xg, sw["x50"], sw["xmax"], sw["b"]), "r-",
+            label=f"Swebrec x50 {sw['x50'] * 1e3:.1f} mm, xmax {sw['xmax'] * 1e3:.0f} mm, "
+                  f"b {sw['b']:.2f} (rms {sw['rms']:.3f})")
+ax.semilogx(xg * 1e3, 100 * bf.swebrec(xg, kco["x50"], kco["xmax"], kco["b"]), "g--",
+            label=f"KCO prediction x50 {kco['x50'] * 1e3:.1f} mm, b {kco['b']:.2f}")
+ax.semilogx(xg * 1e3, 100 * bf.rosin_rammler(xg, kco["x50"], kco["n"]), "g:",
+            label=f"Kuz-Ram (Rosin-Rammler) n {kco['n']:.2f}")
+ax.axvline(x50 * 1e3, color="b", ls=":", lw=0.8)
+ax.set_xlabel("equivalent size sqrt(4A/pi) [mm]"); ax.set_ylabel("passing by mass [%]")
+ax.set_ylim(0, 100)
+ax.legend(fontsize=7, loc="upper left")
+ax.set_title(f"{loose.sum()} fragments at t = {tEnd * 1e6:.0f} us, measured x50 "
+             f"{x50 * 1e3:.1f} mm", fontsize=9)
 axs[1].hist(speed, bins=30, color="tab:orange")
 axs[1].set_xlabel("mean fragment velocity [m/s]"); axs[1].set_ylabel("fragments")
 axs[1].set_title(f"throw velocities: max {speed.max():.1f} m/s, "
@@ -245,8 +348,54 @@ axs[1].set_title(f"throw velocities: max {speed.max():.1f} m/s, "
 fig.tight_layout()
 fig.savefig(os.path.join(here, "fragments.png"), dpi=130)
 
+# Damage zones and vibration
+fig, axs = plt.subplots(1, 2, figsize=(12, 4.6))
+ax = axs[0]
+draw_solid(ax, vEnd, crackLines, "")
+th = np.linspace(0, 2 * np.pi, 200)
+for r, c, lab in [(R_HOLE, "k", "hole"), (crushedRadius, "r", "crushed zone (simulated)"),
+                  (max(rEsen, R_HOLE), "m", f"Esen et al. r_c = {rEsen * 1e3:.1f} mm"),
+                  (crackedRadius, "b", "cracked zone (90 % of broken joint length)")]:
+    ax.plot(HOLE[0] + r * np.cos(th), HOLE[1] + r * np.sin(th), c + "-", lw=1, label=lab)
+ax.plot(gaugePts[:, 0], gaugePts[:, 1], "k^", ms=5, label="solid probes (initial positions)")
+ax.legend(fontsize=7, loc="lower left")
+ax.set_title(f"t = {tEnd * 1e6:.0f} us: crushed {crushedRadius * 1e3:.0f} mm, cracked "
+             f"{crackedRadius * 1e3:.0f} mm (hole r {R_HOLE * 1e3:.0f} mm)", fontsize=9)
+ax = axs[1]
+for i in range(nG):
+    ax.plot(gauges["Time"] * 1e6, gaugeSpeed[:, i], lw=0.8,
+            label=f"({gaugePts[i, 0]:g}, {gaugePts[i, 1]:g}): r {rGauge[i]:.3f} m, "
+                  f"PPV {ppv[i]:.2f} m/s")
+ax.axhline(ppvCrit, color="k", ls="--", label=f"damage threshold f_t c_p/E = {ppvCrit:.2f} m/s")
+ax.set_xlabel("t [us]"); ax.set_ylabel("particle speed |v| [m/s]")
+ax.set_yscale("log"); ax.set_ylim(1e-3, None)
+ax.legend(fontsize=6)
+ax.set_title("Solid probes (postProcessing/gauges)", fontsize=9)
+fig.tight_layout()
+fig.savefig(os.path.join(here, "damageVibration.png"), dpi=130)
+
+# Muck pile: landed area per unit distance from the face
+fig, ax = plt.subplots(figsize=(7, 4))
+edges = np.linspace(min(0.0, throwDist.min()), maxThrow * 1.02 + 1e-9, 60)
+hist, _ = np.histogram(throwDist, edges, weights=A)
+ax.bar(0.5 * (edges[1:] + edges[:-1]), hist / np.diff(edges) / A.sum(),
+       width=np.diff(edges), color="tab:brown")
+ax.set_xlabel("landing distance from the free face [m]")
+ax.set_ylabel("fraction of the broken rock per metre [1/m]")
+ax.set_title(f"Muck pile: ballistic from the face, floor {-zFloor:g} m below the "
+             f"section, g {g:g}: max throw {maxThrow:.2f} m", fontsize=9)
+fig.tight_layout()
+fig.savefig(os.path.join(here, "muckPile.png"), dpi=130)
+
+if "-noAnimation" not in sys.argv:
+    bf.animate(os.path.join(here, "blast.gif"), steps, read_vtu, draw_solid,
+               lambda i: read_vtp_lines(os.path.join(here, "VTK", f"cracks_{i}.vtp")),
+               here, (nx, ny), FLUID)
+
 # ---------------------------------------------------------------- summary
 nMin = 10 if quick else 30
+FIT_RMS = 0.05                          # rms of the fits in passing fraction
+X50_TOL, X80_TOL = 0.15, 0.25
 figs = [
     figure("end time [s]", tEnd),
     figure("peak pressure at the borehole centre [Pa]", pP.max()),
@@ -261,7 +410,11 @@ figs = [
     figure("broken joints", b["brokenJoints"][-1]),
     figure("broken joint length [m]", brokenLength),
     figure("crack reach from the hole centre [m] (burden 0.15)", crackReach),
-    figure("crushed zone radius (90 % of fragments < 6 mm) [m]", crushedRadius),
+    figure("cracked zone radius (90 % of the broken joint length) [m]", crackedRadius),
+    figure("crushed zone radius (rings >= 50 % in one-element fragments) [m]", crushedRadius),
+    figure("Esen et al. crushed zone radius [m] (below the hole radius: none)", rEsen),
+    figure("Esen et al. borehole pressure (products filling the hole) [Pa]", Pb),
+    figure("Esen et al. crushed zone index CZI", czi),
     figure(f"fragments (loose pieces, >= {nMin})", loose.sum(), nMin, 0,
            error=max(0, nMin - loose.sum()), passed=bool(loose.sum() >= nMin)),
     figure(f"fragments in flight (> {FLIGHT_SPEED:g} m/s, >= 1)", inFlight.sum(), 1, 0,
@@ -270,9 +423,32 @@ figs = [
     figure("mass-weighted mean fragment velocity [m/s]", (speed * A).sum() / A.sum()),
     figure("x50 measured [m]", x50),
     figure("x80 measured [m]", x80),
-    figure("Rosin-Rammler uniformity n", nRR),
-    figure("Rosin-Rammler x50 [m] (vs measured)", x50RR, x50, 0.5, relative=True),
-    figure("Rosin-Rammler x80 [m] (vs measured)", x80RR, x80, 0.5, relative=True),
+    figure("resolution-limited mass fraction (< 2 element sizes)", A[limited].sum() / A.sum()),
+    figure("Rosin-Rammler uniformity n", rr["n"]),
+    figure("Rosin-Rammler fit rms error (passing fraction)", rr["rms"], 0, FIT_RMS,
+           error=rr["rms"]),
+    figure("Rosin-Rammler x50 [m] (vs measured)", rr["x50"], x50, X50_TOL, relative=True),
+    figure("Rosin-Rammler x80 [m] (vs measured)", rr["x80"], x80, X80_TOL, relative=True),
+    figure("Swebrec fit rms error (passing fraction)", sw["rms"], 0, FIT_RMS,
+           error=sw["rms"]),
+    figure("Swebrec x50 [m] (vs measured)", sw["x50"], x50, X50_TOL, relative=True),
+    figure("Swebrec x80 [m] (vs measured)", sw["x80"], x80, X80_TOL, relative=True),
+    figure("Swebrec xmax [m]", sw["xmax"]),
+    figure("Swebrec undulation b", sw["b"]),
+    figure("old linearised Rosin-Rammler x50 [m] (all fragments; not checked)", x50Old,
+           x50, relative=True, passed=True),
+    figure("KCO x50 [m] (Kuz-Ram, assumptions in README)", kco["x50"]),
+    figure("KCO uniformity n (Cunningham)", kco["n"]),
+    figure("KCO Swebrec b", kco["b"]),
+    figure("Kuz-Ram rock factor A (Cunningham)", Arock),
+    figure("Kuz-Ram specific charge [kg/m3]", qSpec),
+    figure("Kuz-Ram relative weight strength (ANFO 100)", rws),
+    figure("PPV damage threshold f_t c_p/E [m/s]", ppvCrit),
+    *[figure(f"PPV at gauge ({gaugePts[i, 0]:g} {gaugePts[i, 1]:g}), r = {rGauge[i]:.3f} m"
+             " [m/s]", ppv[i]) for i in range(nG)],
+    figure("max throw distance from the free face [m] (ballistic)", maxThrow),
+    figure("mean throw distance (mass-weighted) [m]", (throwDist * A).sum() / A.sum()),
+    figure("fragments thrown out of the face", towardsFace.sum()),
     # Not checked: a known defect of the coupling (see README), reported only
     figure("energy gained by gas + solid / initial gas energy (ideal 0; not checked)", Egain),
 ]
