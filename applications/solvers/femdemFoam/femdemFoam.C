@@ -144,6 +144,12 @@ int main(int argc, char *argv[])
         outDict.getOrDefault<wordList>("reactions", wordList());
     for (const word& p : reactionPatches)
     {
+        if (std::count(reactionPatches.begin(), reactionPatches.end(), p) > 1)
+        {
+            FatalIOErrorInFunction(properties)
+                << "entry 'output/reactions' lists patch '" << p << "' twice"
+                << exit(FatalIOError);
+        }
         bool found = false;
         for (const femdemSolid::boundaryCondition& bc : solid.boundaryConditions())
         {

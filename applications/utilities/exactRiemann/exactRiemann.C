@@ -28,6 +28,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "caseChecks.H"
 #include "timeSelector.H"
 #include "exactRiemannSolver.H"
 #include "OFstream.H"
@@ -56,6 +57,13 @@ exactRiemannSolver::state readState
     exactRiemannSolver::state s;
     s.rho = dict.get<scalar>("rho");
     s.u = dict.get<scalar>("u");
+    // (before the equation of state sees it: a density <= 0 can trap)
+    if (!(s.rho > 0 && std::isfinite(s.rho)))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'rho' is " << s.rho << "; the density must be > 0"
+            << exit(FatalIOError);
+    }
     const word pEntry(dict.found("e") ? "e" : "p");
     if (pEntry == "e")
     {
@@ -120,6 +128,7 @@ int main(int argc, char *argv[])
             IOobject::MUST_READ, IOobject::NO_WRITE
         )
     );
+    caseChecks::checkInput(dict);
     const scalar x0 = dict.get<scalar>("x0");
     vector dir = dict.getOrDefault<vector>("direction", vector(1, 0, 0));
     dir /= mag(dir);

@@ -63,6 +63,7 @@ Usage
 #include "argList.H"
 #include "Time.H"
 #include "IOdictionary.H"
+#include "caseChecks.H"
 #include "clockTime.H"
 #include "triangleMesh.H"
 #include "jointTopology.H"
@@ -352,6 +353,7 @@ int main(int argc, char *argv[])
         )
     );
 
+    caseChecks::checkInput(meshDict);
     clockTime clock;
 
     const scalar targetSize = meshDict.get<scalar>("targetSize");

@@ -36,6 +36,7 @@ Usage
 #include <cstdlib>
 #include "Time.H"
 #include "IOdictionary.H"
+#include "caseChecks.H"
 #include "clockTime.H"
 #include "triangleMesh.H"
 #include "jointTopology.H"
@@ -130,6 +131,7 @@ int main(int argc, char *argv[])
             false
         )
     );
+    caseChecks::checkInput(meshDict);
     // Index ranges, inverted and zero-area triangles: FatalIOError naming
     // the file, the entry and the triangle
     const triangleMesh mesh(meshDict);

@@ -39,6 +39,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "caseChecks.H"
 #include "blastMixture.H"
 #include "JWL.H"
 #include "boundBox.H"
@@ -187,6 +188,7 @@ int main(int argc, char *argv[])
             IOobject::MUST_READ, IOobject::NO_WRITE
         )
     );
+    caseChecks::checkInput(dict);
     const label nSample = dict.getOrDefault<label>("nSample", 8);
     if (nSample < 1)
     {
@@ -199,7 +201,12 @@ int main(int argc, char *argv[])
     PtrList<chargeShape> charges;
     PtrList<dictionary> chargeDicts;
     {
+        // A charge's entry given twice is an error, as in the file's own
+        // dictionaries (checkInput)
+        const entry::inputMode oldMode = entry::globalInputMode;
+        entry::globalInputMode = entry::inputMode::ERROR;
         const PtrList<entry> entries(dict.lookup("charges"));
+        entry::globalInputMode = oldMode;
         if (entries.empty())
         {
             FatalIOErrorInFunction(dict)
@@ -218,9 +225,17 @@ int main(int argc, char *argv[])
             chargeDicts.set(i, new dictionary(dict, entries[i].dict()));
             chargeDicts[i].name() =
                 dict.objectPath() + ".charges." + entries[i].keyword();
-            charges.set
+            caseChecks::readNaming
             (
-                i, new chargeShape(entries[i].keyword(), chargeDicts[i])
+                chargeDicts[i],
+                [&]()
+                {
+                    charges.set
+                    (
+                        i,
+                        new chargeShape(entries[i].keyword(), chargeDicts[i])
+                    );
+                }
             );
         }
     }

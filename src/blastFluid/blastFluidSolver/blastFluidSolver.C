@@ -10,6 +10,7 @@
 #include "blastLimiters.H"
 #include "surfaceFields.H"
 #include "OStringStream.H"
+#include "caseChecks.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -30,7 +31,7 @@ namespace
         const Foam::IOobject::readOption r
     )
     {
-        return Foam::IOobject
+        Foam::IOobject io
         (
             name,
             mesh.time().timeName(),
@@ -38,6 +39,12 @@ namespace
             r,
             Foam::IOobject::AUTO_WRITE
         );
+        // Numbers, list sizes and dimensions before OpenFOAM reads the file
+        if (r != Foam::IOobject::NO_READ)
+        {
+            Foam::caseChecks::checkFieldFile(io);
+        }
+        return io;
     }
 
 
@@ -63,8 +70,10 @@ namespace
     }
 
 
-    //- Stop unless every value of the field read from its file (cells and
-    //  patch faces) lies in [lower, upper] (lowerOpen: (lower, upper]),
+    //- Stop unless every value of the field read from its file (cells and,
+    //  unless !patches, patch faces: a written restart state has patch
+    //  values the solver does not use) lies in [lower, upper] (lowerOpen:
+    //  (lower, upper]),
     //  naming the file, the entry and the cell or face. Called before the
     //  equation of state sees the values.
     void checkFieldRange
@@ -73,7 +82,8 @@ namespace
         const Foam::scalar lower,
         const bool lowerOpen,
         const Foam::scalar upper,
-        const char* what
+        const char* what,
+        const bool patches = true
     )
     {
         using namespace Foam;
@@ -108,6 +118,7 @@ namespace
         }
         forAll(f.boundaryField(), patchi)
         {
+            if (!patches) break;
             const fvPatchScalarField& pf = f.boundaryField()[patchi];
             forAll(pf, j)
             {
@@ -134,6 +145,7 @@ namespace
 
 void Foam::blastFluidSolver::readControls()
 {
+    caseChecks::checkInput(fluidDict_);
     const word lim(fluidDict_.getOrDefault<word>("limiter", "vanLeer"));
     if (lim == "none") limiter_ = NONE;
     else if (lim == "minmod") limiter_ = MINMOD;
@@ -332,6 +344,38 @@ void Foam::blastFluidSolver::conservativeFromPrimitive()
         rhoU_.primitiveFieldRef()[i] = rho[i]*U[i];
         rhoE_.primitiveFieldRef()[i] = rhoe_[i] + 0.5*rho[i]*magSqr(U[i]);
     }
+}
+
+
+void Foam::blastFluidSolver::checkRestartState()
+{
+    // The cells only: patch values of a written state are not used (alpha
+    // and alphaRho are clamped to their range as in any step)
+    checkFieldRange(rho_, 0, true, GREAT, "the density", false);
+    if (primitivesFromConservative(false))
+    {
+        return;
+    }
+    const scalarField& p = p_.primitiveField();
+    label bad = 0;
+    forAll(p, i)
+    {
+        if (!std::isfinite(p[i]) || !(p[i] > 0) || !(c_[i] > 0))
+        {
+            bad = i;
+            break;
+        }
+    }
+    FatalIOError
+    (
+        FUNCTION_NAME, __FILE__, __LINE__, rhoE_.objectPath(), -1, -1
+    )
+        << "entry 'internalField' of " << rho_.objectPath() << ", "
+        << rhoU_.objectPath() << " and " << rhoE_.objectPath()
+        << ": the state read for the restart is non-physical in cell "
+        << bad << " (centre " << mesh_.C()[bad] << "): rho = "
+        << rho_[bad] << ", rhoU = " << rhoU_[bad] << ", rhoE = "
+        << rhoE_[bad] << " give p = " << p[bad] << exit(FatalIOError);
 }
 
 
@@ -1264,22 +1308,28 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
         {
             FatalErrorInFunction
                 << "Restart from time " << mesh.time().timeName()
-                << ": rhoE present but alphaRho." << m1 << " missing"
-                << exit(FatalError);
+                << ": rhoE present but alphaRho." << m1 << " missing (no"
+                << " file " << alphaRho1Ptr_->objectPath() << " with a valid"
+                << " FoamFile header)" << exit(FatalError);
         }
     }
     else if (!rho_.headerOk())
     {
         FatalErrorInFunction
-            << "Single-material case: field 'rho' missing in time "
-            << mesh.time().timeName() << exit(FatalError);
+            << "Single-material case (one material in entry 'materials' of "
+            << thermoDict_.objectPath() << "): field 'rho' missing in time "
+            << mesh.time().timeName() << " (no file "
+            << rho_.objectPath() << " with a valid FoamFile header)"
+            << exit(FatalError);
     }
 
     if (restart && !rhoU_.headerOk())
     {
         FatalErrorInFunction
             << "Restart from time " << mesh.time().timeName()
-            << ": rhoE present but rhoU missing" << exit(FatalError);
+            << ": rhoE present but rhoU missing (no file "
+            << rhoU_.objectPath() << " with a valid FoamFile header)"
+            << exit(FatalError);
     }
 
     // Gradient fields (zeroGradient; coupled patches get their own type)
@@ -1335,6 +1385,7 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     {
         Info<< "blastFluidSolver: restart from the conservative state of time "
             << mesh.time().timeName() << endl;
+        checkRestartState();
     }
     else
     {

@@ -12,6 +12,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "blastFluidSolver.H"
+#include "caseChecks.H"
 #include "calculatedFvPatchFields.H"
 
 // * * * * * * * * * * * * * * * Gas content  * * * * * * * * * * * * * * * //
@@ -690,6 +691,7 @@ bool Foam::blastFluidSolver::readFluidFraction()
         );
         return false;
     }
+    caseChecks::checkFieldFile(io);
     fluidFractionPtr_.reset(new volScalarField(io, mesh_));
     const scalarField& phi = fluidFractionPtr_->primitiveField();
     forAll(phi, i)

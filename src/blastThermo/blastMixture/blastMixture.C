@@ -31,7 +31,7 @@ Foam::blastMixture::blastMixture(const dictionary& dict)
             << exit(FatalIOError);
     }
     // A material defined twice would be merged, the later entries winning
-    caseChecks::checkNoDuplicateEntries(dict);
+    caseChecks::checkInput(dict);
     if (materials_.size() == 2 && materials_[0] == materials_[1])
     {
         FatalIOErrorInFunction(dict)

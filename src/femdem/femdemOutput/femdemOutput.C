@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "femdemOutput.H"
+#include "caseChecks.H"
 #include "OFstream.H"
 #include "IFstream.H"
 #include "OSspecific.H"
@@ -31,6 +32,43 @@ void Foam::femdemOutput::writeState
 }
 
 
+void Foam::femdemOutput::checkStateShape
+(
+    const femdemSolid& solid,
+    const dictionary& dict
+)
+{
+    // The solver stops before a triangle inverts or stretches its edges
+    // tenfold (elastic rock strains are below a percent): such a state is
+    // a damaged or edited file, not a state to continue
+    const List<vector2D>& x = solid.x();
+    const List<vector2D>& X0 = solid.topology().initialPoints();
+    const labelList& vertex = solid.topology().nodeVertex();
+    for (label t = 0; t < solid.topology().nTriangles(); ++t)
+    {
+        const label n0 = jointTopology::node(t, 0);
+        const vector2D ab = x[n0 + 1] - x[n0], ac = x[n0 + 2] - x[n0];
+        scalar stretch = 1;
+        for (label k = 0; k < 3; ++k)
+        {
+            const label i = n0 + k, j = n0 + (k + 1)%3;
+            const scalar L0 = mag(X0[vertex[j]] - X0[vertex[i]]);
+            const scalar L = mag(x[j] - x[i]);
+            stretch = max(stretch, max(L/L0, L0/max(L, VSMALL)));
+        }
+        if (!(ab.x()*ac.y() - ab.y()*ac.x() > 0) || !(stretch < 10))
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'x': triangle " << t << " (nodes " << n0 << ' '
+                << n0 + 1 << ' ' << n0 + 2 << ") is inverted or an edge is"
+                << " stretched by a factor " << stretch << " relative to"
+                << " constant/solidMesh: not a state the solver writes"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
 bool Foam::femdemOutput::readState(femdemSolid& solid, const fileName& file)
 {
     if (!isFile(file))
@@ -38,7 +76,22 @@ bool Foam::femdemOutput::readState(femdemSolid& solid, const fileName& file)
         return false;
     }
     IFstream is(file);
-    solid.readState(dictionary(is));
+    const dictionary dict(is);
+    // Duplicates, numbers, list sizes; the counts the state declares
+    caseChecks::checkInput(dict);
+    const label nNodes = dict.get<label>("nNodes");
+    const label nJoints = dict.get<label>("nJoints");
+    const label nx = dict.get<List<vector2D>>("x").size();
+    const label nb = dict.get<boolList>("broken").size();
+    if (nNodes != nx || nJoints != nb)
+    {
+        FatalIOErrorInFunction(dict)
+            << "entries 'nNodes' " << nNodes << " and 'nJoints' " << nJoints
+            << " do not match the sizes of 'x' (" << nx << ") and 'broken' ("
+            << nb << ')' << exit(FatalIOError);
+    }
+    solid.readState(dict);
+    checkStateShape(solid, dict);
     return true;
 }
 

@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "femdemSolid.H"
+#include "caseChecks.H"
 #include "cohesiveLaw.H"
 #include "contactLaw.H"
 #include <cstdlib>
@@ -208,6 +209,8 @@ Foam::femdemSolid::femdemSolid
     jointsDamaged_(false),
     jointError_(0)
 {
+    // Before any product of the values: 1e300 would overflow to inf
+    caseChecks::checkNumbers(dict);
     if (!(safety_ > 0 && safety_ <= 1))
     {
         FatalIOErrorInFunction(dict)

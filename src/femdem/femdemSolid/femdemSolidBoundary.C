@@ -38,8 +38,9 @@ void Foam::femdemSolid::setBoundaryConditions(const dictionary& dict)
         if (bc.patch < 0)
         {
             FatalIOErrorInFunction(bcDict)
-                << "patch '" << key << "' is not in the solid mesh; patches: "
-                << patchNames_ << exit(FatalIOError);
+                << "patch '" << key << "' is not in the solid mesh (entry"
+                << " 'boundary' of constant/" << triangleMesh::meshFileName
+                << "); patches: " << patchNames_ << exit(FatalIOError);
         }
         const word type = d.get<word>("type");
         bc.value = Zero;

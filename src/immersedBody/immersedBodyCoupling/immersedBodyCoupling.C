@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "immersedBodyCoupling.H"
+#include "caseChecks.H"
 #include "fvMesh.H"
 #include "zeroGradientFvPatchFields.H"
 #include "syncTools.H"
@@ -57,13 +58,16 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
     viewTriangles_(nullptr),
     alphaSolid_
     (
-        IOobject
+        caseChecks::checkFieldFile
         (
-            "alpha.solid",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::READ_IF_PRESENT,
-            IOobject::AUTO_WRITE
+            IOobject
+            (
+                "alpha.solid",
+                mesh.time().timeName(),
+                mesh,
+                IOobject::READ_IF_PRESENT,
+                IOobject::AUTO_WRITE
+            )
         ),
         mesh,
         dimensionedScalar(dimless, Zero),
@@ -93,6 +97,7 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
         "method", "beta", "minFluidFraction", "crackPressure",
         "crackOpening"
     });
+    caseChecks::checkInput(dict);
     for (const entry& e : dict)
     {
         if (e.keyword() != "FoamFile" && !valid.found(e.keyword()))

@@ -10,8 +10,14 @@ License
 #include "IFstream.H"
 #include "OSspecific.H"
 #include "Enum.H"
+#include "IOobject.H"
+#include "dimensionSet.H"
+#include "vector.H"
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <cstdlib>
 #include <unistd.h>
 
@@ -43,6 +49,68 @@ label launcherSize()
 bool hasSpace(const std::string& s)
 {
     return s.find_first_of(" \t") != std::string::npos;
+}
+
+
+//- OpenFOAM's tokenizer aborts (a signal) on a negative size of a compound
+//  list ('nonuniform List<scalar> -1 (...)'): look at the text first
+void negativeCompoundSize(const fileName& file)
+{
+    std::ifstream raw(file);
+    const std::string text
+    (
+        (std::istreambuf_iterator<char>(raw)), std::istreambuf_iterator<char>()
+    );
+    for
+    (
+        auto pos = text.find("List<");
+        pos != std::string::npos;
+        pos = text.find("List<", pos + 5)
+    )
+    {
+        const auto gt = text.find('>', pos);
+        const auto k =
+            gt == std::string::npos
+          ? gt : text.find_first_not_of(" \t\r\n", gt + 1);
+        if (k != std::string::npos && text[k] == '-')
+        {
+            const label line =
+                1 + std::count(text.begin(), text.begin() + k, '\n');
+            FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file, line)
+                << "the size of the list "
+                << text.substr(pos, gt - pos + 1).c_str() << " at line "
+                << line << " is negative" << exit(FatalIOError);
+        }
+    }
+}
+
+
+//- Every value of a compound list token (nonuniform field values) finite
+//  and of magnitude <= maxMag; false if not
+bool compoundInRange(const token& t, const scalar maxMag)
+{
+    auto ok = [maxMag](const scalar x)
+    {
+        return std::isfinite(x) && std::abs(x) <= maxMag;
+    };
+    const token::compound& c = t.compoundToken();
+    typedef token::Compound<List<scalar>> scalars;
+    typedef token::Compound<List<vector>> vectors;
+    if (const auto* s = dynamic_cast<const scalars*>(&c))
+    {
+        for (const scalar x : static_cast<const List<scalar>&>(*s))
+        {
+            if (!ok(x)) return false;
+        }
+    }
+    else if (const auto* v = dynamic_cast<const vectors*>(&c))
+    {
+        for (const vector& x : static_cast<const List<vector>&>(*v))
+        {
+            if (!ok(x.x()) || !ok(x.y()) || !ok(x.z())) return false;
+        }
+    }
+    return true;
 }
 
 } // End anonymous namespace
@@ -118,6 +186,13 @@ void Foam::caseChecks::checkControlDict(const dictionary& dict)
                 << "entry 'writeInterval' is " << writeInterval << "; it must"
                 << " be a finite number > 0" << exit(FatalIOError);
         }
+        if (writeControl == "timeStep" && !(writeInterval <= labelMax))
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'writeInterval' is " << writeInterval << "; with"
+                << " writeControl timeStep it must be a number of steps <= "
+                << labelMax << exit(FatalIOError);
+        }
         if (writeControl == "timeStep" && !(writeInterval >= 1))
         {
             FatalIOErrorInFunction(dict)
@@ -149,6 +224,13 @@ void Foam::caseChecks::checkControlDict(const dictionary& dict)
             << startTime << ": the run would end at once and do nothing"
             << exit(FatalIOError);
     }
+    if (stopAt == "endTime" && endTime > startTime && deltaT > endTime - startTime)
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'deltaT' " << deltaT << " is longer than the run"
+            << " (endTime - startTime = " << endTime - startTime << ')'
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -162,6 +244,31 @@ void Foam::caseChecks::checkControlDict(const argList& args)
     IFstream is(file);
     const dictionary dict(is);
     checkControlDict(dict);
+
+    // startFrom startTime other than 0: the time directory must exist
+    // (else OpenFOAM names a missing field file of a time nobody wrote)
+    scalar startTime = 0;
+    if
+    (
+        dict.getOrDefault<word>("startFrom", "startTime") == "startTime"
+     && dict.readIfPresent("startTime", startTime) && startTime != 0
+    )
+    {
+        const instantList times = Time::findTimes(args.path(), "constant");
+        bool found = false;
+        for (const instant& t : times)
+        {
+            found = found
+             || mag(t.value() - startTime) <= 1e-12*max(mag(startTime), 1);
+        }
+        if (!found && std::isfinite(startTime))
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'startTime' " << startTime << " (startFrom"
+                << " startTime): the case has no time directory for it"
+                << exit(FatalIOError);
+        }
+    }
 }
 
 
@@ -201,6 +308,86 @@ void Foam::caseChecks::checkNoDuplicateEntries(const dictionary& dict)
         reread.read(is);
     }
     entry::globalInputMode = oldMode;
+}
+
+
+void Foam::caseChecks::checkNumbers(const dictionary& dict, const scalar maxMag)
+{
+    for (const entry& e : dict)
+    {
+        if (e.isDict())
+        {
+            checkNumbers(e.dict(), maxMag);
+            continue;
+        }
+        const ITstream& is = e.stream();
+        forAll(is, i)
+        {
+            const token& t = is[i];
+            if (t.isCompound() && !compoundInRange(t, maxMag))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "entry '" << e.keyword() << "': a value of the list is"
+                    << " not finite or of magnitude > " << maxMag
+                    << exit(FatalIOError);
+            }
+            if (!t.isNumber())
+            {
+                continue;
+            }
+            // (std::isfinite first: comparing a NaN traps under FOAM_SIGFPE)
+            const scalar x = t.number();
+            const bool size =
+                t.isLabel() && i + 1 < is.size() && is[i + 1].isPunctuation()
+             && (is[i + 1].pToken() == token::BEGIN_LIST
+              || is[i + 1].pToken() == token::BEGIN_BLOCK);
+            if (!std::isfinite(x) || mag(x) > maxMag || (size && x < 0))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "entry '" << e.keyword() << "': "
+                    << (size ? "list size " : "number ") << x
+                    << (size ? " is negative" : " is out of range")
+                    << " (numbers must be finite, of magnitude <= " << maxMag
+                    << "; list sizes >= 0)" << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
+void Foam::caseChecks::checkInput(const dictionary& dict)
+{
+    checkNoDuplicateEntries(dict);
+    checkNumbers(dict);
+}
+
+
+const Foam::IOobject& Foam::caseChecks::checkFieldFile(const IOobject& io)
+{
+    const fileName file = io.objectPath();
+    if (!isFile(file))
+    {
+        return io;    // the reader reports a missing MUST_READ field
+    }
+    negativeCompoundSize(file);
+    IFstream is(file);
+    const dictionary dict(is);
+    if (dict.found("dimensions"))
+    {
+        // OpenFOAM's unit lookup fails without naming the file
+        readNaming
+        (
+            dict,
+            [&]()
+            {
+                dimensionSet dims(dimless);
+                ITstream& ds = dict.lookup("dimensions");
+                ds >> dims;
+            }
+        );
+    }
+    checkNumbers(dict, GREAT);
+    return io;
 }
 
 

@@ -418,11 +418,16 @@ Foam::gmshReader::gmshReader(std::istream& is, const fileName& name)
                     " (gmsh -format msh22 or msh41, without -bin)"
                 );
             }
-            if (!(label(version_) == 2 || (version_ > 4.05 && version_ < 4.15)))
+            // (no label(version_): a huge number traps under FOAM_SIGFPE)
+            if
+            (
+                !((version_ >= 2 && version_ < 3)
+               || (version_ > 4.05 && version_ < 4.15))
+            )
             {
                 fail
                 (
-                    "format " + std::to_string(version_)
+                    "$MeshFormat: format " + std::to_string(version_)
                   + " is not read; use 2.2 or 4.1"
                 );
             }
@@ -454,7 +459,12 @@ Foam::gmshReader::gmshReader(std::istream& is, const fileName& name)
         }
         else
         {
-            fail("unexpected '" + token + "' outside a section");
+            fail
+            (
+                "unexpected '" + token + "' outside a section (a section"
+                " header $MeshFormat, $PhysicalNames, $Entities, $Nodes or"
+                " $Elements missing before it?)"
+            );
         }
     }
     if (version_ == 0)

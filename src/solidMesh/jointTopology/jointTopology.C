@@ -123,7 +123,9 @@ Foam::jointTopology::jointTopology(const triangleMesh& mesh)
                     << "Edge (" << e[0] << ' ' << e[1] << ") of patch "
                     << mesh.patchNames()[patchi]
                     << " is not a boundary edge of the solid mesh"
-                    << exit(FatalError);
+                    << " (entry 'boundary." << mesh.patchNames()[patchi]
+                    << ".edges' of constant/" << triangleMesh::meshFileName
+                    << ')' << exit(FatalError);
             }
             boundaryPatch_[f] = patchi;
         }

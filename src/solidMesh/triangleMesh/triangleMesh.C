@@ -8,6 +8,7 @@ License
 #include "triangleMesh.H"
 #include "Time.H"
 #include "IOdictionary.H"
+#include "caseChecks.H"
 #include "EdgeMap.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -255,6 +256,7 @@ Foam::triangleMesh Foam::triangleMesh::New(const Time& runTime)
             false
         )
     );
+    caseChecks::checkInput(dict);
     return triangleMesh(dict);
 }
 
