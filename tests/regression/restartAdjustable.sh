@@ -64,7 +64,12 @@ interrupt() {
     # Write times, files, step lines
     local wRef wCut
     wRef=$(writeTimes "$ref/$sub" | sed 's/ $//')
-    wCut=$(writeTimes "$c/$sub" | sed "s/\(^\| \)$tStop / /; s/^ //; s/ $//")
+    wCut=$(writeTimes "$c/$sub" | sed 's/ $//')
+    # The stop's own directory is extra, unless the signal landed on a write time
+    case " $wRef " in
+        *" $tStop "*) ;;
+        *) wCut=$(echo " $wCut " | sed "s/ $tStop / /; s/^ //; s/ $//") ;;
+    esac
     [ "$wRef" = "$wCut" ] || bad "$c: write times '$wCut' (+ $tStop), uninterrupted '$wRef'"
     local nSame=0 nDiff=0 t d
     for t in $wRef; do
