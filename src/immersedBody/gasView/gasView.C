@@ -13,13 +13,11 @@ License
 Foam::gasView::gasView
 (
     const fvMesh& mesh,
-    const dictionary& dict,
-    const scalar depth
+    const dictionary& dict
 )
 :
     mesh_(mesh),
     crackOpening_(dict.getOrDefault<scalar>("crackOpening", 0.5)),
-    depth_(depth),
     openJoints_
     (
         IOobject
@@ -89,20 +87,24 @@ void Foam::gasView::initialise
 }
 
 
-void Foam::gasView::candidateCellSizes(const UList<vector2D>& x)
+void Foam::gasView::candidateCellSizes
+(
+    const UList<vector2D>& x,
+    const solidProjection& cells
+)
 {
-    // The cell holding the joint's midpoint (at mid-depth), on whichever
+    // The cell holding the joint's midpoint, on whichever
     // processor has it; outside the mesh the size is 0 (opens at once:
     // there is no gas there to see it)
     const List<jointNodeList>& nodes = view_->topology().jointNodes();
-    const scalar zMid = 0.5*(mesh_.bounds().min().z() + mesh_.bounds().max().z());
+    const scalarField& area = cells.cellArea();
     cellSize_.setSize(candidates_.size());
     forAll(candidates_, i)
     {
         const jointNodeList& n = nodes[candidates_[i]];
         const vector2D m = 0.25*(x[n[0]] + x[n[1]] + x[n[2]] + x[n[3]]);
-        const label c = mesh_.findCell(point(m.x(), m.y(), zMid));
-        cellSize_[i] = c >= 0 ? Foam::sqrt(mesh_.V()[c]/depth_) : 0;
+        const label c = cells.findCell(m);
+        cellSize_[i] = c >= 0 ? Foam::sqrt(area[c]) : 0;
     }
     if (Pstream::parRun())
     {
@@ -129,7 +131,8 @@ void Foam::gasView::markExposedPoints()
 const Foam::continuousView& Foam::gasView::update
 (
     const continuousView& solidView,
-    const UList<vector2D>& x
+    const UList<vector2D>& x,
+    const solidProjection& cells
 )
 {
     if (!view_.valid())
@@ -145,7 +148,7 @@ const Foam::continuousView& Foam::gasView::update
     }
     if (candidates_.size())
     {
-        candidateCellSizes(x);
+        candidateCellSizes(x, cells);
         markExposedPoints();
         const labelList& pointOfNode = view_->pointOfNode();
         DynamicList<label> opened;

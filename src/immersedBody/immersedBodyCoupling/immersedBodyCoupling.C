@@ -141,7 +141,7 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
                 << exit(FatalIOError);
         }
         apertures_.reset(new faceApertures(mesh));
-        gasView_.reset(new gasView(mesh, dict, depth_));
+        gasView_.reset(new gasView(mesh, dict));
     }
 }
 
@@ -230,7 +230,8 @@ void Foam::immersedBodyCoupling::startStep
     const scalar dt
 )
 {
-    const continuousView& view = gasView_->update(solidView, nodePositions);
+    const continuousView& view =
+        gasView_->update(solidView, nodePositions, projection_);
 
     // Points of the view and their mean node velocities
     const labelList& pointOfNode = view.pointOfNode();
