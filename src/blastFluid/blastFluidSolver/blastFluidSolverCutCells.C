@@ -816,27 +816,29 @@ void Foam::blastFluidSolver::setEmbeddedBoundary
 
     // Compact faces; a face next to a cell without gas at both ends of the
     // step is closed (no gas can pass into the solid)
+    loadApertures(aperture);
     for (label f = 0; f < nInternal_; ++f)
     {
         const label P = own_[f], N = nei_[f];
-        const bool shut =
-            (phi0[P] <= 0 && phi1[P] <= 0) || (phi0[N] <= 0 && phi1[N] <= 0);
-        aperture_[f] = shut ? 0 : aperture[f];
+        if ((phi0[P] <= 0 && phi1[P] <= 0) || (phi0[N] <= 0 && phi1[N] <= 0))
+        {
+            aperture_[f] = 0;
+        }
     }
     forAll(patchKind_, patchi)
     {
         if (patchKind_[patchi] == SKIP) continue;
-        const scalarField& ap = aperture.boundaryField()[patchi];
         const label start = patchStart_[patchi];
-        forAll(ap, j)
+        const label n = aperture.boundaryField()[patchi].size();
+        for (label cf = start; cf < start + n; ++cf)
         {
-            const label cf = start + j, P = own_[cf], b = cf - nInternal_;
+            const label P = own_[cf], b = cf - nInternal_;
             bool shut = phi0[P] <= 0 && phi1[P] <= 0;
             if (patchKind_[patchi] == COUPLED)
             {
                 shut = shut || (phi0Nbr[b] <= 0 && phi1Nbr[b] <= 0);
             }
-            aperture_[cf] = shut ? 0 : ap[j];
+            if (shut) aperture_[cf] = 0;
         }
     }
 
