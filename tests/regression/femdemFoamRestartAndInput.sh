@@ -54,3 +54,14 @@ bad zeroE 's/E 10e9/E 0/' femdemProperties "'E'"
 bad negativeRho 's/rho 2500/rho -1/' femdemProperties "'rho'"
 bad unknownMaterial 's/materials { rock/materials { granite/' femdemProperties rock
 bad unknownLaw 's/cohesiveLaw munjiza/cohesiveLaw munjitza/' femdemProperties munjitza
+
+# A deltaT that needs more sub-steps than a label holds (4e9 here) used to
+# wrap the count to one sub-step of the whole deltaT and blow the solid up
+rm -rf bad_hugeDeltaT && cp -r base bad_hugeDeltaT && cd bad_hugeDeltaT
+sed -i 's/endTime 4e-5; deltaT 2e-6;/endTime 4e3; deltaT 1e3;/; s/writeInterval 2e-5;/writeInterval 1e3;/' system/controlDict
+if femdemFoam > log.femdemFoam 2>&1; then echo ">> hugeDeltaT: accepted  <-- FAIL"; exit 1; fi
+grep -q "'deltaT'" log.femdemFoam && grep -q "system/controlDict" log.femdemFoam \
+    || { echo ">> hugeDeltaT: message lacks 'deltaT' / system/controlDict  <-- FAIL"; tail -12 log.femdemFoam; exit 1; }
+if grep -q "Signal\|sigFpe\|Segmentation" log.femdemFoam; then echo ">> hugeDeltaT: crashed  <-- FAIL"; exit 1; fi
+echo ">> hugeDeltaT (deltaT 1e3 s, $(grep -o 'more than 1e8 sub-steps' log.femdemFoam | head -1)): rejected, message names 'deltaT' and system/controlDict"
+cd ..

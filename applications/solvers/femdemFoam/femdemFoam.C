@@ -205,7 +205,7 @@ int main(int argc, char *argv[])
         << solid.nJoints() << " joints, " << solid.materials().size()
         << " material(s)" << nl
         << "Stable time step: " << solid.stableTimeStep() << " s ("
-        << label(std::ceil(runTime.deltaTValue()/solid.stableTimeStep()))
+        << std::ceil(runTime.deltaTValue()/solid.stableTimeStep())
         << " sub-steps per deltaT)" << nl << endl;
 
     // Logs

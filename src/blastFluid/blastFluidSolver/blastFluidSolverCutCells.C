@@ -250,13 +250,14 @@ void Foam::blastFluidSolver::redistributePass
     const scalarField& V = mesh_.V();
     const scalarField& count = w.count.primitiveField();
     scalarField& vol = w.volume.primitiveFieldRef();
+    UPtrList<scalarField> share(w.shareValues(nComp));
     forAll(vol, i)
     {
         const scalar s = V[i]/count[i];
         vol[i] = phi[i]*s;
         for (label k = 0; k < nComp; ++k)
         {
-            w.share[k].primitiveFieldRef()[i] = component(k, i)*s;
+            share[k][i] = component(k, i)*s;
         }
     }
     w.count.correctBoundaryConditions();
@@ -374,6 +375,7 @@ void Foam::blastFluidSolver::neighbourhoodStates
     cutCellFields& w = srd_();
     const scalarField& small = w.small.primitiveField();
     const scalarField& count = w.count.primitiveField();
+    UPtrList<scalarField> share(w.shareValues(nComp));
     forAll(phi, i)
     {
         if (w.sumVolume[i] > 0)
@@ -381,17 +383,17 @@ void Foam::blastFluidSolver::neighbourhoodStates
             const scalar r = 1/w.sumVolume[i];
             for (label k = 0; k < nComp; ++k)
             {
-                w.share[k].primitiveFieldRef()[i] = r*w.sum[k][i];
+                share[k][i] = r*w.sum[k][i];
             }
         }
         else if (small[i] > 0)
         {
             // The shares are content V/count: mass and energy are lost
-            lostMass_ += w.share[0][i]*count[i];
-            lostEnergy_ += w.share[4][i]*count[i];
+            lostMass_ += share[0][i]*count[i];
+            lostEnergy_ += share[4][i]*count[i];
             for (label k = 0; k < nComp; ++k)
             {
-                w.share[k].primitiveFieldRef()[i] = 0;
+                share[k][i] = 0;
             }
         }
     }
@@ -461,6 +463,10 @@ void Foam::blastFluidSolver::fillEmptyCells()
             );
         }
     }
+    scalarField& alphaRef =
+        twoPhase_ ? alpha1Ptr_->primitiveFieldRef() : w;
+    scalarField& ar1Ref =
+        twoPhase_ ? alphaRho1Ptr_->primitiveFieldRef() : w;
     for (label i = 0; i < nCells; ++i)
     {
         if (phi[i] > 0 || w[i] <= 0) continue;
@@ -470,8 +476,8 @@ void Foam::blastFluidSolver::fillEmptyCells()
         rhoE_[i] = s*e[i];
         if (twoPhase_)
         {
-            alpha1Ptr_->primitiveFieldRef()[i] = s*a[i];
-            alphaRho1Ptr_->primitiveFieldRef()[i] = s*ar[i];
+            alphaRef[i] = s*a[i];
+            ar1Ref[i] = s*ar[i];
         }
     }
     primitivesCurrent_ = false;

@@ -88,11 +88,16 @@ public:
             rho[i] = mass[i]*rV;
             rhoU[i] = momentum[i]*rV;
             rhoE[i] = energy[i]*rV;
-            if (solver_.twoPhase_)
+        }
+        if (solver_.twoPhase_)
+        {
+            scalarField& ar1 = solver_.alphaRho1Ptr_->primitiveFieldRef();
+            scalarField& alpha = solver_.alpha1Ptr_->primitiveFieldRef();
+            forAll(phi, i)
             {
-                solver_.alphaRho1Ptr_->primitiveFieldRef()[i] = mass1[i]*rV;
-                solver_.alpha1Ptr_->primitiveFieldRef()[i] =
-                    volume[i] > 0 ? volume1[i]/volume[i] : 0;
+                if (phi[i] <= 0) continue;
+                ar1[i] = mass1[i]*(1/(phi[i]*V[i]));
+                alpha[i] = volume[i] > 0 ? volume1[i]/volume[i] : 0;
             }
         }
     }

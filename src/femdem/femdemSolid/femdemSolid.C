@@ -411,6 +411,17 @@ void Foam::femdemSolid::trackWorkDisplacement()
 Foam::label Foam::femdemSolid::advance(const scalar interval)
 {
     workDisplacement_ = Zero;
+    // More than 1e8 sub-steps per interval is a case error (a deltaT made
+    // for another problem), and beyond 2^31 the count would not fit a label
+    if (!(interval < 1e8*deltaT_))
+    {
+        FatalErrorInFunction
+            << "the interval of " << interval << " s to advance the FEMDEM"
+            << " solid needs more than 1e8 sub-steps of its stable time step "
+            << deltaT_ << " s: entry 'deltaT' (or 'maxDeltaT') of"
+            << " system/controlDict is far too large for this solid"
+            << exit(FatalError);
+    }
     label n = max(label(std::ceil(interval/deltaT_*(1 - 1e-12))), 1);
     scalar dt = interval/n;
     for (label i = 0; i < n; ++i)

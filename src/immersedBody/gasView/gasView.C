@@ -18,6 +18,7 @@ Foam::gasView::gasView
 :
     mesh_(mesh),
     crackOpening_(dict.getOrDefault<scalar>("crackOpening", 0.5)),
+    crackVenting_(dict.getOrDefault<bool>("crackVenting", true)),
     openJoints_
     (
         IOobject
@@ -144,7 +145,7 @@ const Foam::continuousView& Foam::gasView::update
     candidates_.clear();
     forAll(broken, j)
     {
-        if (broken[j] && !open_[j]) candidates_.append(j);
+        if (crackVenting_ && broken[j] && !open_[j]) candidates_.append(j);
     }
     if (candidates_.size())
     {

@@ -95,7 +95,7 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
     const wordList valid
     ({
         "method", "beta", "minFluidFraction", "crackPressure",
-        "crackOpening"
+        "crackOpening", "crackVenting"
     });
     caseChecks::checkInput(dict);
     for (const entry& e : dict)
