@@ -231,6 +231,17 @@ cgalTriangulator::mesh cgalTriangulator::triangulate(const domain& input)
         }
     }
 
+    std::vector<std::pair<CDT::Constraint_id, int>> joints;
+    for (size_t s = 0; s < input.jointStart.size(); ++s)
+    {
+        const Vertex_handle a = vertex.at(input.jointStart[s]);
+        const Vertex_handle b = vertex.at(input.jointEnd[s]);
+        if (a != b)
+        {
+            joints.emplace_back(cdt.insert_constraint(a, b), input.jointTag[s]);
+        }
+    }
+
     // Mark the regions to mesh on the constrained triangulation of the
     // input, then refine: the mesher keeps the marks on new triangles
     labelRegions(cdt, input.region, [](const Face_handle&) { return true; });
@@ -295,6 +306,22 @@ cgalTriangulator::mesh cgalTriangulator::triangulate(const domain& input)
             if ((*v)->info() >= 0 && (*next)->info() >= 0)
             {
                 pieceTag[key(*v, *next)] = ct.second;
+            }
+        }
+    }
+
+    // Joint edges: the pieces of the joint constraints in the mesh
+    for (const auto& ct : joints)
+    {
+        auto v = cdt.vertices_in_constraint_begin(ct.first);
+        auto next = v;
+        for (++next; next != cdt.vertices_in_constraint_end(ct.first); ++v, ++next)
+        {
+            if ((*v)->info() >= 0 && (*next)->info() >= 0)
+            {
+                result.jointEdgeStart.push_back((*v)->info());
+                result.jointEdgeEnd.push_back((*next)->info());
+                result.jointEdgeTag.push_back(ct.second);
             }
         }
     }
