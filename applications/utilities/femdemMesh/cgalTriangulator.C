@@ -20,6 +20,7 @@ Description
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 
 #include <cmath>
+#include <fenv.h>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -204,8 +205,26 @@ int labelRegions
 } // End anonymous namespace
 
 
+namespace
+{
+
+// Floating-point traps off while CGAL runs (OpenFOAM enables them,
+// FOAM_SIGFPE): CGAL's filtered predicates may meet non-finite values of
+// a degenerate input and then stop with an assertion (an exception that
+// femdemMesh reports with the dictionary) instead of a signal
+struct noFpeTraps
+{
+    const int saved = fegetexcept();
+    noFpeTraps() { fedisableexcept(FE_ALL_EXCEPT); }
+    ~noFpeTraps() { feclearexcept(FE_ALL_EXCEPT); feenableexcept(saved); }
+};
+
+} // End anonymous namespace
+
+
 cgalTriangulator::mesh cgalTriangulator::triangulate(const domain& input)
 {
+    const noFpeTraps guard;
     if (input.minAngleDegrees <= 0 || input.minAngleDegrees > 35)
     {
         throw std::runtime_error("minAngle must be in (0, 35] degrees");

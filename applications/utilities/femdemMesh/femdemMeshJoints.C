@@ -116,7 +116,7 @@ void readCsv
             {
                 FatalIOErrorInFunction(d)
                     << "joint set " << spec.name << ", entry 'file': " << file
-                    << " line " << lineNo << ", column '" << header[c]
+                    << " line " << lineNo << ", column '" << header[c].c_str()
                     << "': not a finite number" << exit(FatalIOError);
             }
             return scalar(v);
@@ -124,7 +124,7 @@ void readCsv
         const vector2D c(value(cx), value(cy));
         const scalar a = value(co)*constant::mathematical::pi/180;
         const vector2D h = 0.5*value(cl)*vector2D(std::cos(a), std::sin(a));
-        femdemMeshJoints::segment s{c - h, c + h, setIndex, 1, -1};
+        femdemMeshJoints::segment s{c - h, c + h, setIndex, 1, -1, lineNo};
         if (cs >= 0)
         {
             s.factor = value(cs)/ftSet;
@@ -182,7 +182,7 @@ void Foam::femdemMeshJoints::read
     for (const word& key : jPtr->toc())
     {
         const dictionary& d = jPtr->subDict(key);
-        jointSetSpec spec{key, d, false, false};
+        jointSetSpec spec{key, d, false, false, fileName()};
         spec.properties.remove("type");
         spec.properties.remove("segments");
         spec.properties.remove("file");
@@ -203,7 +203,7 @@ void Foam::femdemMeshJoints::read
                 }
                 segments.append
                 (
-                    segment{segs[i].first(), segs[i].second(), sets.size(), 1, -1}
+                    segment{segs[i].first(), segs[i].second(), sets.size(), 1, -1, i}
                 );
             }
         }
@@ -212,6 +212,7 @@ void Foam::femdemMeshJoints::read
             fileName file = d.get<fileName>("file");
             file.expand();
             if (!file.isAbsolute()) file = casePath/file;
+            spec.file = file;
             readCsv(d, sets.size(), file, spec, segments);
         }
         else
@@ -251,6 +252,7 @@ Foam::femdemMeshJoints::clippedJoints Foam::femdemMeshJoints::clip
         // Crossings: parameter t on the segment, outline, side, s on side
         DynamicList<outlinePoint> hits;
         DynamicList<scalar> hitT;
+        DynamicList<vector2D> hitX;
         forAll(outlines, o)
         {
             const List<vector2D>& P = outlines[o];
@@ -268,6 +270,7 @@ Foam::femdemMeshJoints::clippedJoints Foam::femdemMeshJoints::clip
                 }
                 hits.append(outlinePoint{o, label(k), s, -1});
                 hitT.append(min(max(ti, scalar(0)), scalar(1)));
+                hitX.append(p + min(max(s, scalar(0)), scalar(1))*e);
             }
         }
         // Pieces between consecutive distinct crossings, kept when inside
@@ -280,14 +283,22 @@ Foam::femdemMeshJoints::clippedJoints Foam::femdemMeshJoints::clip
         {
             if (cuts.empty() || x - cuts.last() > eps) cuts.append(x);
         }
-        // One point per cut, shared by the outlines that cross there
+        // One point per cut, shared by the outlines that cross there. A
+        // crossing is placed on the outline side (exactly on an axis-aligned
+        // side): a boundary bent by round-off makes CGAL's mesher fail on
+        // the near-degenerate corner; the joint takes the round-off instead
         labelList cutPoint(cuts.size(), -1);
         auto pointAt = [&](const label c)
         {
             if (cutPoint[c] < 0)
             {
                 cutPoint[c] = out.points.size();
-                out.points.append(sg.a + cuts[c]*d);
+                vector2D x = sg.a + cuts[c]*d;
+                forAll(hitT, h)
+                {
+                    if (mag(hitT[h] - cuts[c]) <= eps) { x = hitX[h]; break; }
+                }
+                out.points.append(x);
             }
             return cutPoint[c];
         };
@@ -308,11 +319,21 @@ Foam::femdemMeshJoints::clippedJoints Foam::femdemMeshJoints::clip
         {
             const dictionary& d =
                 meshDict.subDict("jointSets").subDict(sets[sg.set].name);
-            FatalIOErrorInFunction(d)
-                << "joint set " << sets[sg.set].name << ": segment "
-                << sg.a << " " << sg.b << " lies outside the solid (no part"
-                << " of it is in a solid of entry 'solids' outside the"
-                << " holes)" << exit(FatalIOError);
+            const jointSetSpec& js = sets[sg.set];
+            FatalIOErrorInFunction(d) << "joint set " << js.name;
+            if (js.file.empty())
+            {
+                FatalIOError << ", entry 'segments': segment " << sg.index;
+            }
+            else
+            {
+                FatalIOError
+                    << ", entry 'file': " << js.file << " line " << sg.index;
+            }
+            FatalIOError
+                << " " << sg.a << " " << sg.b << " lies outside the solid"
+                << " (no part of it is in a solid of entry 'solids' outside"
+                << " the holes)" << exit(FatalIOError);
         }
         // Crossings used by a kept piece go into their outline side
         forAll(hits, h)
