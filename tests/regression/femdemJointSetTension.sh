@@ -14,7 +14,9 @@
 # a DFN CSV file (columns in another order, an extra column, a
 # tensileStrength column scaling the set's 3 MPa to 1.5 MPa), other mesh
 # size and pull speed; C a joint at 30 degrees to the y axis (breaking
-# in shear: Mohr-Coulomb criterion below f_t/n_x^2), another size.
+# in shear: Mohr-Coulomb criterion below f_t/n_x^2) from a CSV row whose
+# frictionAngle (20) replaces the set's (40: the criterion would be
+# 0.75 MPa), another size. Then a bad joint-set property in solidMesh.
 set -eu
 cd "$JWLIBFOAM_TEST_DIR"
 ok=0
@@ -102,5 +104,18 @@ run_case B 0.008 0.006 "dfn { type file; file \"constant/dfn.csv\"; tensileStren
 "# one fracture across the block
 id,length,orientation,y,x,tensileStrength
 1,0.05,90,0.025,0.05,1.5e6" || ok=1
-run_case C 0.008 0.005 "inclined { type lines; segments (((0 -0.0616025404) (0.1 0.1116025404))); tensileStrength 1e6; cohesion 0.8e6; frictionAngle 20; GI 1; GII 5; }" "1e6 0.8e6 20 30" || ok=1
+run_case C 0.008 0.005 "inclined { type file; file \"constant/dfn.csv\"; tensileStrength 1e6; cohesion 0.8e6; frictionAngle 40; GI 1; GII 5; }" "1e6 0.8e6 20 30" \
+"x,y,orientation,length,frictionAngle
+0.05,0.025,60,0.2,20" || ok=1
+# Bad joint-set property in constant/solidMesh: femdemFoam must stop
+# naming the file and the entry (and write nothing)
+rm -rf bad; cp -r A bad; rm -rf bad/postProcessing
+sed -i '0,/tensileStrength 1000000;/s//tensileStrength -1;/' bad/constant/solidMesh
+rc=0; femdemFoam -case bad > bad/log 2>&1 || rc=$?
+if [ $rc -ne 0 ] && [ $rc -lt 128 ] && grep -q "FOAM FATAL IO ERROR" bad/log && grep -q "solidMesh.jointSets.across" bad/log \
+   && grep -q "entry 'tensileStrength' must be positive" bad/log && [ ! -d bad/postProcessing ]; then
+    echo ">> bad input: joint set tensileStrength -1 in constant/solidMesh: FatalIOError naming solidMesh, the set and 'tensileStrength'"
+else
+    echo ">> bad input: joint set tensileStrength -1: exit $rc  <-- FAIL"; tail -8 bad/log; ok=1
+fi
 exit $ok

@@ -57,6 +57,42 @@ using namespace Foam;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
+namespace
+{
+
+//- The mesh without the patches of joint-set curves that have no boundary
+//  edge (a trace inside the solid is no patch)
+triangleMesh withoutEmptyJointPatches
+(
+    const triangleMesh& mesh,
+    const UList<triangleJointSet>& sets
+)
+{
+    DynamicList<word> names;
+    DynamicList<edgeList> edges;
+    forAll(mesh.patchNames(), i)
+    {
+        bool isSet = false;
+        for (const triangleJointSet& js : sets)
+        {
+            isSet = isSet || js.name == mesh.patchNames()[i];
+        }
+        if (!isSet || mesh.patchEdges()[i].size())
+        {
+            names.append(mesh.patchNames()[i]);
+            edges.append(mesh.patchEdges()[i]);
+        }
+    }
+    return triangleMesh
+    (
+        mesh.points(), mesh.triangles(), mesh.triangleMaterials(),
+        mesh.materials(), names, edges
+    );
+}
+
+} // End anonymous namespace
+
+
 int main(int argc, char *argv[])
 {
     argList::addNote
@@ -105,11 +141,15 @@ int main(int argc, char *argv[])
             )
         );
         caseChecks::checkInput(dict);
-        mesh.setJointSets(reader.jointSets(dict.subDict("jointSets")));
-        for (const triangleJointSet& js : mesh.jointSets())
+        const List<triangleJointSet> sets =
+            reader.jointSets(dict.subDict("jointSets"));
+        mesh = withoutEmptyJointPatches(mesh, sets);
+        mesh.setJointSets(sets);
+        for (const triangleJointSet& js : sets)
         {
             Info<< "    joint set " << js.name << ": " << js.edges.size()
-                << " edges" << nl;
+                << " edges (lines of the physical curve inside the mesh)"
+                << nl;
         }
     }
     Info<< "Read " << mshFile << " (format " << reader.version() << "): "
@@ -123,7 +163,8 @@ int main(int argc, char *argv[])
     if (reader.droppedLines())
     {
         Info<< "    " << reader.droppedLines() << " lines of physical curves"
-            << " not on the boundary of the triangles were dropped" << nl;
+            << " not on the boundary of the triangles were dropped as patch"
+            << " edges (joint-set traces are not patches)" << nl;
     }
 
     if (args.found("renumber"))
