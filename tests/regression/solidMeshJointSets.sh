@@ -15,7 +15,7 @@
 #   control: case A meshed without its jointSets must fail the check.
 # Then bad input, each a FatalIOError naming the file and the entry: a
 # segment outside the solid (from the dictionary, from a CSV file), a
-# zero-length segment, an unreadable CSV, a
+# zero-length segment and fracture, an unreadable CSV, a
 # missing column, a bad number, a jointSets curve missing from the gmsh
 # file, a solidMesh joint-set edge that is no triangle edge.
 set -u
@@ -148,6 +148,9 @@ bad missingColumn nocol.csv "orientation" d4
 printf 'x,y,orientation,length\n0.5,0.2,abc,0.1\n' > nan.csv
 { base; echo "jointSets { js { type file; file \"$PWD/nan.csv\"; } }"; } > d5
 bad badNumber nan.csv "column 'orientation'" d5
+printf 'x,y,orientation,length\n0.5,0.2,30,0.1\n0.5,0.3,30,0\n' > zero.csv
+{ base; echo "jointSets { js { type file; file \"$PWD/zero.csv\"; } }"; } > d7
+bad zeroLengthFracture zero.csv "line 3, column 'length'" d7
 printf 'x,y,orientation,length\n0.5,0.2,30,0.1\n5,5,0,0.1\n' > out.csv
 { base; echo "jointSets { js { type file; file \"$PWD/out.csv\"; } }"; } > d6
 bad outsideFracture out.csv "line 3" d6

@@ -147,12 +147,12 @@ void readCsv
                     << exit(FatalIOError);
             }
         }
-        if (!(mag(s.b - s.a) > 0))
+        if (!(value(cl) > 0 && mag(s.b - s.a) > 0))
         {
             FatalIOErrorInFunction(d)
-                << "joint set " << spec.name << ": " << file << " line "
-                << lineNo << ": the fracture has zero length"
-                << exit(FatalIOError);
+                << "joint set " << spec.name << ", entry 'file': " << file
+                << " line " << lineNo << ", column 'length': the fracture"
+                << " must have a positive length" << exit(FatalIOError);
         }
         segments.append(s);
     }
