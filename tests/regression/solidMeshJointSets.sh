@@ -142,18 +142,15 @@ bad outsideSegment femdemMeshDict "entry 'segments': segment 0" d1
 bad zeroLength femdemMeshDict "segments" d2
 { base; echo 'jointSets { js { type file; file "missing.csv"; } }'; } > d3
 bad unreadableCsv missing.csv "file" d3
-printf 'x,y,length\n0.5,0.2,0.1\n' > nocol.csv
-{ base; echo "jointSets { js { type file; file \"$PWD/nocol.csv\"; } }"; } > d4
-bad missingColumn nocol.csv "orientation" d4
-printf 'x,y,orientation,length\n0.5,0.2,abc,0.1\n' > nan.csv
-{ base; echo "jointSets { js { type file; file \"$PWD/nan.csv\"; } }"; } > d5
-bad badNumber nan.csv "column 'orientation'" d5
-printf 'x,y,orientation,length\n0.5,0.2,30,0.1\n0.5,0.3,30,0\n' > zero.csv
-{ base; echo "jointSets { js { type file; file \"$PWD/zero.csv\"; } }"; } > d7
-bad zeroLengthFracture zero.csv "line 3, column 'length'" d7
-printf 'x,y,orientation,length\n0.5,0.2,30,0.1\n5,5,0,0.1\n' > out.csv
-{ base; echo "jointSets { js { type file; file \"$PWD/out.csv\"; } }"; } > d6
-bad outsideFracture out.csv "line 3" d6
+badCsv() {   # name csv-content entry: a joint set from that CSV file must be refused
+    printf "$2" > $1.csv
+    { base; echo "jointSets { js { type file; file \"$PWD/$1.csv\"; } }"; } > d_$1
+    bad $1 $1.csv "$3" d_$1
+}
+badCsv missingColumn 'x,y,length\n0.5,0.2,0.1\n' "orientation"
+badCsv badNumber 'x,y,orientation,length\n0.5,0.2,abc,0.1\n' "column 'orientation'"
+badCsv zeroLengthFracture 'x,y,orientation,length\n0.5,0.2,30,0.1\n0.5,0.3,30,0\n' "line 3, column 'length'"
+badCsv outsideFracture 'x,y,orientation,length\n0.5,0.2,30,0.1\n5,5,0,0.1\n' "line 3"
 # gmshToFemdem: a joint set naming no interior curve
 rm -rf bad_gmsh; mkdir -p bad_gmsh/system
 printf 'FoamFile { version 2.0; format ascii; class dictionary; object gmshToFemdemDict; }\njointSets { faults { tensileStrength 1e6; } }\n' \
