@@ -20,6 +20,7 @@ Description
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 
 #include <cmath>
+#include <fenv.h>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -204,8 +205,26 @@ int labelRegions
 } // End anonymous namespace
 
 
+namespace
+{
+
+// Floating-point traps off while CGAL runs (OpenFOAM enables them,
+// FOAM_SIGFPE): CGAL's filtered predicates may meet non-finite values of
+// a degenerate input and then stop with an assertion (an exception that
+// femdemMesh reports with the dictionary) instead of a signal
+struct noFpeTraps
+{
+    const int saved = fegetexcept();
+    noFpeTraps() { fedisableexcept(FE_ALL_EXCEPT); }
+    ~noFpeTraps() { feclearexcept(FE_ALL_EXCEPT); feenableexcept(saved); }
+};
+
+} // End anonymous namespace
+
+
 cgalTriangulator::mesh cgalTriangulator::triangulate(const domain& input)
 {
+    const noFpeTraps guard;
     if (input.minAngleDegrees <= 0 || input.minAngleDegrees > 35)
     {
         throw std::runtime_error("minAngle must be in (0, 35] degrees");
@@ -228,6 +247,17 @@ cgalTriangulator::mesh cgalTriangulator::triangulate(const domain& input)
             (
                 cdt.insert_constraint(a, b), input.segmentTag[s]
             );
+        }
+    }
+
+    std::vector<std::pair<CDT::Constraint_id, int>> joints;
+    for (size_t s = 0; s < input.jointStart.size(); ++s)
+    {
+        const Vertex_handle a = vertex.at(input.jointStart[s]);
+        const Vertex_handle b = vertex.at(input.jointEnd[s]);
+        if (a != b)
+        {
+            joints.emplace_back(cdt.insert_constraint(a, b), input.jointTag[s]);
         }
     }
 
@@ -295,6 +325,22 @@ cgalTriangulator::mesh cgalTriangulator::triangulate(const domain& input)
             if ((*v)->info() >= 0 && (*next)->info() >= 0)
             {
                 pieceTag[key(*v, *next)] = ct.second;
+            }
+        }
+    }
+
+    // Joint edges: the pieces of the joint constraints in the mesh
+    for (const auto& ct : joints)
+    {
+        auto v = cdt.vertices_in_constraint_begin(ct.first);
+        auto next = v;
+        for (++next; next != cdt.vertices_in_constraint_end(ct.first); ++v, ++next)
+        {
+            if ((*v)->info() >= 0 && (*next)->info() >= 0)
+            {
+                result.jointEdgeStart.push_back((*v)->info());
+                result.jointEdgeEnd.push_back((*next)->info());
+                result.jointEdgeTag.push_back(ct.second);
             }
         }
     }

@@ -14,6 +14,10 @@ Description
     Meshes the 2D solids described in system/femdemMeshDict with CGAL's
     constrained Delaunay mesher (smallest angle and local size bounds) and
     writes the continuous solid mesh constant/solidMesh (see triangleMesh).
+    Optional pre-existing joints (entry 'jointSets', see femdemMeshJoints.H)
+    are constraints of the mesh: every joint segment, clipped to the solid,
+    is covered by triangle edges, listed in the mesh's jointSets with the
+    set's properties.
 
     \verbatim
     targetSize  0.02;           // largest edge length away from refinements
@@ -39,6 +43,11 @@ Description
         tip  { type point; point (0.8 0.25); size 0.005; }
         line { type polyline; points ((0 0) (1 0.5)); size 0.01; }
     }
+    jointSets                   // optional: see femdemMeshJoints.H
+    {
+        bedding { type lines; segments (((0 0.1) (1 0.3))); tensileStrength 1e6; }
+        dfn     { type file; file "constant/dfn.csv"; }
+    }
     \endverbatim
     Size at a point: the smallest of targetSize and, for each refinement,
     size + grading*max(0, distance to the feature - distance) (distance
@@ -59,6 +68,7 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "cgalTriangulator.H"
+#include "femdemMeshJoints.H"
 
 #include "argList.H"
 #include "Time.H"
@@ -72,6 +82,8 @@ Usage
 #include "solidVtkWriter.H"
 #include "mathematicalConstants.H"
 #include "HashTable.H"
+#include "EdgeMap.H"
+#include "ListOps.H"
 
 using namespace Foam;
 
@@ -307,6 +319,116 @@ shape readShape
     return s;
 }
 
+
+//- Joint points and pieces into the CGAL input (tag: the segment); a
+//  crossing at an outline vertex takes that vertex's coordinates
+void addJointInput
+(
+    femdemMeshJoints::clippedJoints& joints,
+    const UList<List<vector2D>>& outlines,
+    cgalTriangulator::domain& input
+)
+{
+    const scalar eps = 1e-10;
+    for (femdemMeshJoints::outlinePoint& op : joints.inserted)
+    {
+        const List<vector2D>& P = outlines[op.outline];
+        if (op.s < eps || op.s > 1 - eps)
+        {
+            const label k = op.s < eps ? op.side : (op.side + 1) % P.size();
+            joints.points[op.point] = P[k];
+            op.point = -1;      // the outline has the point already
+        }
+    }
+    for (const vector2D& p : joints.points)
+    {
+        input.x.push_back(p.x());
+        input.y.push_back(p.y());
+    }
+    forAll(joints.pieceStart, i)
+    {
+        input.jointStart.push_back(joints.pieceStart[i]);
+        input.jointEnd.push_back(joints.pieceEnd[i]);
+        input.jointTag.push_back(joints.pieceSegment[i]);
+    }
+}
+
+
+//- Outline o as constrained sides, the joints' crossings inserted in order
+void addOutline
+(
+    const label o,
+    const labelList& sidePatch,
+    const femdemMeshJoints::clippedJoints& joints,
+    const List<vector2D>& P,
+    cgalTriangulator::domain& input
+)
+{
+    DynamicList<label> loop, side;
+    forAll(P, k)
+    {
+        loop.append(input.x.size());
+        side.append(k);
+        input.x.push_back(P[k].x());
+        input.y.push_back(P[k].y());
+        DynamicList<scalar> s;
+        DynamicList<label> pts;
+        for (const femdemMeshJoints::outlinePoint& op : joints.inserted)
+        {
+            if (op.outline == o && op.side == k && op.point >= 0)
+            {
+                s.append(op.s);
+                pts.append(op.point);
+            }
+        }
+        for (const label i : sortedOrder(s))
+        {
+            loop.append(pts[i]);
+            side.append(k);
+        }
+    }
+    forAll(loop, i)
+    {
+        input.segmentStart.push_back(loop[i]);
+        input.segmentEnd.push_back(loop[(i + 1) % loop.size()]);
+        input.segmentTag.push_back(sidePatch[side[i]]);
+    }
+}
+
+
+//- The joint sets of the mesh: the edges covering each set's segments
+List<triangleJointSet> meshJointSets
+(
+    const cgalTriangulator::mesh& m,
+    const UList<femdemMeshJoints::jointSetSpec>& sets,
+    const UList<femdemMeshJoints::segment>& segments
+)
+{
+    List<triangleJointSet> result(sets.size());
+    List<EdgeMap<label>> seen(sets.size());
+    List<DynamicList<edge>> edges(sets.size());
+    List<DynamicList<scalar>> factor(sets.size()), friction(sets.size());
+    for (size_t i = 0; i < m.jointEdgeTag.size(); ++i)
+    {
+        const femdemMeshJoints::segment& sg = segments[m.jointEdgeTag[i]];
+        const edge e(m.jointEdgeStart[i], m.jointEdgeEnd[i]);
+        if (!seen[sg.set].insert(e, 0)) continue;   // overlapping segments
+        edges[sg.set].append(e);
+        factor[sg.set].append(sg.factor);
+        friction[sg.set].append(sg.frictionAngle);
+    }
+    forAll(sets, s)
+    {
+        triangleJointSet& js = result[s];
+        js.name = sets[s].name;
+        js.properties = sets[s].properties;
+        js.edges.transfer(edges[s]);
+        if (sets[s].perEdgeFactor) js.strengthFactor.transfer(factor[s]);
+        if (sets[s].perEdgeFriction) js.frictionAngle.transfer(friction[s]);
+    }
+    return result;
+}
+
 } // End anonymous namespace
 
 
@@ -504,26 +626,12 @@ int main(int argc, char *argv[])
         }
     }
 
-    // CGAL input
-    cgalTriangulator::domain input;
-    for (const List<shape>* group : {&solids, &holes})
+    // Joint sets, clipped to the solid (outlines: solids, then holes)
+    List<List<vector2D>> outlines(solids.size() + holes.size());
+    forAll(solids, i) outlines[i] = solids[i].points;
+    forAll(holes, i) outlines[solids.size() + i] = holes[i].points;
+    auto regionOf = [&](const vector2D& p)
     {
-        for (const shape& s : *group)
-        {
-            const label start = input.x.size();
-            forAll(s.points, i)
-            {
-                input.x.push_back(s.points[i].x());
-                input.y.push_back(s.points[i].y());
-                input.segmentStart.push_back(start + i);
-                input.segmentEnd.push_back(start + (i + 1) % s.points.size());
-                input.segmentTag.push_back(s.sidePatch[i]);
-            }
-        }
-    }
-    input.region = [&](double x, double y)
-    {
-        const vector2D p(x, y);
         for (const shape& h : holes)
         {
             if (inside(h.points, p)) return label(-1);
@@ -534,11 +642,34 @@ int main(int argc, char *argv[])
         }
         return label(-1);
     };
+    DynamicList<femdemMeshJoints::jointSetSpec> jointSets;
+    DynamicList<femdemMeshJoints::segment> jointSegments;
+    femdemMeshJoints::read(meshDict, runTime.path(), jointSets, jointSegments);
+    femdemMeshJoints::clippedJoints joints = femdemMeshJoints::clip
+    (
+        meshDict, jointSets, jointSegments, outlines,
+        [&](const vector2D& p) { return regionOf(p) >= 0; }
+    );
+
+    // CGAL input: joint points first, then the outlines with the joints'
+    // crossing points inserted into their sides
+    cgalTriangulator::domain input;
+    addJointInput(joints, outlines, input);
+    forAll(outlines, o)
+    {
+        const shape& s =
+            o < solids.size() ? solids[o] : holes[o - solids.size()];
+        addOutline(o, s.sidePatch, joints, outlines[o], input);
+    }
+    input.region = [&](double x, double y) { return regionOf(vector2D(x, y)); };
     input.size = [&](double x, double y) { return sizeAt(vector2D(x, y)); };
     input.minAngleDegrees = minAngle;
 
     Info<< "Meshing " << solids.size() << " solids, " << holes.size()
-        << " holes, " << input.segmentStart.size() << " boundary segments,"
+        << " holes, " << input.segmentStart.size() << " boundary segments, "
+        << jointSets.size() << " joint sets (" << joints.pieceStart.size()
+        << " pieces of " << jointSegments.size() << " segments, "
+        << joints.nClipped << " pieces outside the solid clipped),"
         << " target size " << targetSize << ", smallest angle " << minAngle
         << " degrees" << endl;
 
@@ -581,7 +712,7 @@ int main(int argc, char *argv[])
     }
     List<DynamicList<edge>> patchEdges(patchNames.size());
     label nUnnamed = 0;
-    forAll(cgalMesh.edgeTag, e)
+    for (size_t e = 0; e < cgalMesh.edgeTag.size(); ++e)
     {
         const edge ed(cgalMesh.edgeStart[e], cgalMesh.edgeEnd[e]);
         if (cgalMesh.edgeTag[e] >= 0)
@@ -603,6 +734,7 @@ int main(int argc, char *argv[])
     (
         points, triangles, triangleMaterials, materials, patchNames, patches
     );
+    mesh.setJointSets(meshJointSets(cgalMesh, jointSets, jointSegments));
     if (args.found("renumber"))
     {
         const scalar before = solidMeshRenumber::localNeighbourFraction(mesh);

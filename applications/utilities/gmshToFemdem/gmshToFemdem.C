@@ -17,8 +17,23 @@ Description
     rejected (unreadable, unsupported elements, inverted or degenerate
     triangles, non-manifold edges).
 
+    Joint traces: with a dictionary (system/gmshToFemdemDict when present,
+    or -dict file) whose entry 'jointSets' names physical curves, the lines
+    of those curves inside the mesh (curves embedded in a surface, e.g.
+    'Curve{5} In Surface{1};' in the .geo) become the joint sets of the
+    solid mesh, with the properties given (see jointSetStrengths.H):
+    \verbatim
+    jointSets
+    {
+        joints { tensileStrength 0.5e6; cohesion 1e6; frictionAngle 25; }
+    }
+    \endverbatim
+
 Usage
-    gmshToFemdem [-case dir] [-renumber] [-vtk] <file.msh>
+    gmshToFemdem [-case dir] [-dict file] [-renumber] [-vtk] <file.msh>
+
+    -dict       the dictionary with 'jointSets' (default
+                system/gmshToFemdemDict, optional)
 
     -renumber   METIS renumbering of triangles and points (blocks of 32)
     -vtk        also write VTK/solidMesh_0.vtu (materials, quality)
@@ -28,6 +43,8 @@ Usage
 #include "argList.H"
 #include "Time.H"
 #include "clockTime.H"
+#include "IOdictionary.H"
+#include "caseChecks.H"
 #include "gmshReader.H"
 #include "jointTopology.H"
 #include "solidMeshQuality.H"
@@ -40,6 +57,42 @@ using namespace Foam;
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
+namespace
+{
+
+//- The mesh without the patches of joint-set curves that have no boundary
+//  edge (a trace inside the solid is no patch)
+triangleMesh withoutEmptyJointPatches
+(
+    const triangleMesh& mesh,
+    const UList<triangleJointSet>& sets
+)
+{
+    DynamicList<word> names;
+    DynamicList<edgeList> edges;
+    forAll(mesh.patchNames(), i)
+    {
+        bool isSet = false;
+        for (const triangleJointSet& js : sets)
+        {
+            isSet = isSet || js.name == mesh.patchNames()[i];
+        }
+        if (!isSet || mesh.patchEdges()[i].size())
+        {
+            names.append(mesh.patchNames()[i]);
+            edges.append(mesh.patchEdges()[i]);
+        }
+    }
+    return triangleMesh
+    (
+        mesh.points(), mesh.triangles(), mesh.triangleMaterials(),
+        mesh.materials(), names, edges
+    );
+}
+
+} // End anonymous namespace
+
+
 int main(int argc, char *argv[])
 {
     argList::addNote
@@ -48,6 +101,7 @@ int main(int argc, char *argv[])
     );
     argList::noParallel();
     argList::addArgument("msh", "The gmsh mesh file");
+    argList::addOption("dict", "file", "Dictionary with jointSets");
     argList::addBoolOption("renumber", "METIS renumbering for locality");
     argList::addBoolOption("vtk", "Also write VTK/solidMesh_0.vtu");
 
@@ -69,6 +123,35 @@ int main(int argc, char *argv[])
     }
     gmshReader reader(is, mshFile);
     triangleMesh mesh(reader.mesh());
+    const fileName dictFile = args.getOrDefault<fileName>
+    (
+        "dict", runTime.system()/"gmshToFemdemDict"
+    );
+    if (args.found("dict") || isFile(runTime.path()/dictFile))
+    {
+        IOdictionary dict
+        (
+            IOobject
+            (
+                dictFile.isAbsolute() ? dictFile : runTime.path()/dictFile,
+                runTime,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        );
+        caseChecks::checkInput(dict);
+        const List<triangleJointSet> sets =
+            reader.jointSets(dict.subDict("jointSets"));
+        mesh = withoutEmptyJointPatches(mesh, sets);
+        mesh.setJointSets(sets);
+        for (const triangleJointSet& js : sets)
+        {
+            Info<< "    joint set " << js.name << ": " << js.edges.size()
+                << " edges (lines of the physical curve inside the mesh)"
+                << nl;
+        }
+    }
     Info<< "Read " << mshFile << " (format " << reader.version() << "): "
         << mesh.nTriangles() << " triangles, " << mesh.materials().size()
         << " materials, " << mesh.patchNames().size() << " patches" << nl;
@@ -80,7 +163,8 @@ int main(int argc, char *argv[])
     if (reader.droppedLines())
     {
         Info<< "    " << reader.droppedLines() << " lines of physical curves"
-            << " not on the boundary of the triangles were dropped" << nl;
+            << " not on the boundary of the triangles were dropped as patch"
+            << " edges (joint-set traces are not patches)" << nl;
     }
 
     if (args.found("renumber"))

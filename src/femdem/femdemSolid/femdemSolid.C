@@ -9,6 +9,7 @@ License
 #include "caseChecks.H"
 #include "cohesiveLaw.H"
 #include "contactLaw.H"
+#include "jointSetStrengths.H"
 #include <cstdlib>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -90,7 +91,7 @@ void Foam::femdemSolid::setReference(const triangleMesh& mesh)
 }
 
 
-void Foam::femdemSolid::setJoints()
+void Foam::femdemSolid::setJoints(const triangleMesh& mesh)
 {
     const label nMat = materials_.size();
     jointClasses_.setSize(nMat*nMat);
@@ -118,6 +119,11 @@ void Foam::femdemSolid::setJoints()
         jointLength0_[j] = mag(x_[n[1]] - x_[n[0]]);
     }
     setJointStrengths();
+    // Pre-existing joints of the mesh's joint sets: their own properties
+    jointSetStrengths::apply
+    (
+        mesh, topo_, materials_, jointClasses_, jointClass_, jointStrength_
+    );
 }
 
 
@@ -238,7 +244,7 @@ Foam::femdemSolid::femdemSolid
     setMaterials(mesh, dict);
     setReference(mesh);
     setLawGroups();
-    setJoints();
+    setJoints(mesh);
     markFreeEdges();
     setBoundaryConditions(dict);
     setStableStepConstants();

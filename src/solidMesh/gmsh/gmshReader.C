@@ -644,6 +644,11 @@ Foam::triangleMesh Foam::gmshReader::mesh()
         }
         const edge ed(*a, *b);
         const auto count = edgeCount.cfind(ed);
+        if (count.found() && *count == 2)
+        {
+            // Inside the mesh: a joint trace if the curve is a joint set
+            interiorLines_(patchNames[curveTags.find(p)]).append(ed);
+        }
         if (!count.found() || *count != 1)
         {
             ++droppedLines_;        // inside the mesh
@@ -661,6 +666,32 @@ Foam::triangleMesh Foam::gmshReader::mesh()
     (
         points, triangles, triangleMaterials, materials, patchNames, patches
     );
+}
+
+
+Foam::List<Foam::triangleJointSet> Foam::gmshReader::jointSets
+(
+    const dictionary& jointSetsDict
+) const
+{
+    const wordList names = jointSetsDict.toc();
+    List<triangleJointSet> sets(names.size());
+    forAll(names, i)
+    {
+        const auto iter = interiorLines_.cfind(names[i]);
+        if (!iter.found() || (*iter).empty())
+        {
+            FatalIOErrorInFunction(jointSetsDict)
+                << "joint set '" << names[i] << "': " << name_ << " has no"
+                << " physical curve of that name with lines inside the"
+                << " triangles (curves with interior lines: "
+                << interiorLines_.sortedToc() << ")" << exit(FatalIOError);
+        }
+        sets[i].name = names[i];
+        sets[i].edges = *iter;
+        sets[i].properties = jointSetsDict.subDict(names[i]);
+    }
+    return sets;
 }
 
 

@@ -171,11 +171,21 @@ Foam::triangleMesh Foam::solidMeshRenumber::reorder
             e = edge(newPoint[e[0]], newPoint[e[1]]);
         }
     }
-    return triangleMesh
+    List<triangleJointSet> jointSets(mesh.jointSets());
+    for (triangleJointSet& js : jointSets)
+    {
+        for (edge& e : js.edges)
+        {
+            e = edge(newPoint[e[0]], newPoint[e[1]]);
+        }
+    }
+    triangleMesh result
     (
         points, triangles, materials, mesh.materials(), mesh.patchNames(),
         patchEdges
     );
+    result.setJointSets(jointSets);
+    return result;
 }
 
 

@@ -200,6 +200,93 @@ void Foam::triangleMesh::validate(const dictionary* dictPtr) const
 }
 
 
+void Foam::triangleMesh::validateJointSets(const dictionary* dictPtr) const
+{
+    if (jointSets_.empty()) return;
+    EdgeMap<label> meshEdge(3*triangles_.size());
+    for (const triangleVertices& tri : triangles_)
+    {
+        for (label k = 0; k < 3; ++k)
+        {
+            meshEdge.set(edge(tri[k], tri[(k + 1) % 3]), 0);
+        }
+    }
+    for (const triangleJointSet& js : jointSets_)
+    {
+        const string where = "entry 'jointSets/" + js.name + "/";
+        forAll(js.edges, i)
+        {
+            if (!meshEdge.found(js.edges[i]))
+            {
+                meshError
+                (
+                    dictPtr,
+                    where + "edges': edge " + Foam::name(i) + " ("
+                  + Foam::name(js.edges[i][0]) + " "
+                  + Foam::name(js.edges[i][1]) + ") is not an edge of a"
+                    " triangle"
+                );
+            }
+        }
+        const bool sizesOk =
+            (js.strengthFactor.empty()
+          || js.strengthFactor.size() == js.edges.size())
+         && (js.frictionAngle.empty()
+          || js.frictionAngle.size() == js.edges.size());
+        if (!sizesOk)
+        {
+            meshError
+            (
+                dictPtr,
+                where + "strengthFactor' and 'edgeFrictionAngle' must be"
+                " empty or have one value per edge ("
+              + Foam::name(js.edges.size()) + ")"
+            );
+        }
+        for (const scalar w : js.strengthFactor)
+        {
+            if (!(w > 0))
+            {
+                meshError(dictPtr, where + "strengthFactor': values must be"
+                    " positive, got " + Foam::name(w));
+            }
+        }
+        for (const scalar phi : js.frictionAngle)
+        {
+            if (!(phi >= 0 && phi < 90))
+            {
+                meshError(dictPtr, where + "edgeFrictionAngle': values must"
+                    " lie in [0, 90) degrees, got " + Foam::name(phi));
+            }
+        }
+    }
+}
+
+
+void Foam::triangleMesh::readJointSets(const dictionary& dict)
+{
+    const dictionary* jPtr = dict.findDict("jointSets");
+    if (!jPtr) return;
+    const wordList names = jPtr->toc();
+    jointSets_.setSize(names.size());
+    forAll(names, i)
+    {
+        const dictionary& d = jPtr->subDict(names[i]);
+        triangleJointSet& js = jointSets_[i];
+        js.name = names[i];
+        js.edges = d.get<edgeList>("edges");
+        js.strengthFactor =
+            d.getOrDefault<scalarList>("strengthFactor", scalarList());
+        js.frictionAngle =
+            d.getOrDefault<scalarList>("edgeFrictionAngle", scalarList());
+        js.properties = d;
+        js.properties.remove("edges");
+        js.properties.remove("strengthFactor");
+        js.properties.remove("edgeFrictionAngle");
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::triangleMesh::triangleMesh
@@ -239,6 +326,8 @@ Foam::triangleMesh::triangleMesh(const dictionary& dict)
             bdict.subDict(patchNames_[patchi]).get<edgeList>("edges");
     }
     validate(&dict);
+    readJointSets(dict);
+    validateJointSets(&dict);
 }
 
 
@@ -357,6 +446,13 @@ Foam::scalarList Foam::triangleMesh::areas() const
 }
 
 
+void Foam::triangleMesh::setJointSets(const List<triangleJointSet>& sets)
+{
+    jointSets_ = sets;
+    validateJointSets(nullptr);
+}
+
+
 Foam::label Foam::triangleMesh::findPatch(const word& name) const
 {
     return patchNames_.find(name);
@@ -383,6 +479,25 @@ Foam::dictionary Foam::triangleMesh::toDict() const
         bdict.add(patchNames_[patchi], pdict);
     }
     dict.add("boundary", bdict);
+    if (!jointSets_.empty())
+    {
+        dictionary jdict;
+        for (const triangleJointSet& js : jointSets_)
+        {
+            dictionary sdict(js.properties);
+            sdict.add("edges", js.edges);
+            if (!js.strengthFactor.empty())
+            {
+                sdict.add("strengthFactor", js.strengthFactor);
+            }
+            if (!js.frictionAngle.empty())
+            {
+                sdict.add("edgeFrictionAngle", js.frictionAngle);
+            }
+            jdict.add(js.name, sdict);
+        }
+        dict.add("jointSets", jdict);
+    }
 
     IOstream::defaultPrecision(oldPrecision);
     return dict;
