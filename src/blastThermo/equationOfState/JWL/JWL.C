@@ -29,19 +29,24 @@ const Foam::wordList Foam::equationsOfState::JWL::presets
 namespace
 {
     // LLNL Explosives Handbook values (model.md section 3):
-    // rho0 kg/m3, A B GPa, R1 R2 omega, E0 GPa, D m/s, PCJ GPa
+    // rho0 kg/m3, A B GPa, R1 R2 omega, E0 GPa, D m/s, PCJ GPa;
+    // unreacted explosive (Murnaghan, see JWL.H): c0 m/s, s (Us = c0 + s up)
     struct jwlPreset
     {
         const char* name;
-        double rho0, A, B, R1, R2, omega, E0, D, PCJ;
+        double rho0, A, B, R1, R2, omega, E0, D, PCJ, c0, s;
     };
 
     const jwlPreset presetTable[] =
     {
-        {"TNT",   1630, 371.2, 3.231,  4.15, 0.95, 0.30, 7.0,  6930, 21.0},
-        {"PETN",  1770, 617.1, 16.926, 4.40, 1.20, 0.25, 10.1, 8300, 33.5},
-        {"CompB", 1717, 524.2, 7.678,  4.20, 1.10, 0.34, 8.5,  7980, 29.5},
-        {"HMX",   1891, 778.3, 7.071,  4.20, 1.00, 0.30, 10.5, 9110, 42.0}
+        {"TNT",  1630, 371.2, 3.231, 4.15, 0.95, 0.30, 7.0, 6930, 21.0,
+            2390, 2.05},
+        {"PETN", 1770, 617.1, 16.926, 4.40, 1.20, 0.25, 10.1, 8300, 33.5,
+            2420, 2.48},
+        {"CompB", 1717, 524.2, 7.678, 4.20, 1.10, 0.34, 8.5, 7980, 29.5,
+            3030, 1.73},
+        {"HMX",  1891, 778.3, 7.071, 4.20, 1.00, 0.30, 10.5, 9110, 42.0,
+            2900, 2.06}
     };
 }
 
@@ -63,14 +68,15 @@ Foam::equationsOfState::JWL::JWL
         dict,
         wordList
         ({
-            "explosive", "rho0", "A", "B", "R1", "R2", "omega", "E0", "D", "PCJ"
+            "explosive", "rho0", "A", "B", "R1", "R2", "omega", "E0", "D", "PCJ",
+            "unreacted"
         })
     );
 
     word explosive;
+    const jwlPreset* found = nullptr;
     if (dict.readIfPresent("explosive", explosive))
     {
-        const jwlPreset* found = nullptr;
         for (const jwlPreset& row : presetTable)
         {
             if (explosive == row.name) found = &row;
@@ -135,10 +141,70 @@ Foam::equationsOfState::JWL::JWL
     }
 
     rhoSmall_ = 1e-15*rho0_;
+    readUnreacted(dict, found ? found->c0 : 0, found ? found->s : 0);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::equationsOfState::JWL::readUnreacted
+(
+    const dictionary& dict,
+    const scalar c0,
+    const scalar s
+)
+{
+    const bool preset = c0 > 0;
+    if (!preset && !dict.found("unreacted"))
+    {
+        return;
+    }
+    dictionary u;
+    if (preset)
+    {
+        // K0 = rho0 c0^2 with the rho0 in use: the preset sound speed
+        u.add("K0", rho0_*sqr(c0));
+        u.add("n", 4*s - 1);
+        u.add("Gamma", 1.0);
+    }
+    if (dict.found("unreacted"))
+    {
+        const dictionary& ud = dict.subDict("unreacted");
+        for (const entry& e : ud)
+        {
+            if (e.keyword() == "rho0" || e.keyword() == "q")
+            {
+                FatalIOErrorInFunction(ud)
+                    << "JWL material " << name_ << ": entry 'unreacted."
+                    << e.keyword() << "' is not allowed: the unreacted"
+                    << " explosive has the JWL's rho0 and q = E0/rho0"
+                    << exit(FatalIOError);
+            }
+            u.set(e);
+        }
+        u.name() = ud.name();
+    }
+    u.set("rho0", rho0_);
+    u.set("q", E0_/rho0_);
+    unreacted_.reset(new Murnaghan(name_ + ".unreacted", u));
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::equationsOfState::Murnaghan&
+Foam::equationsOfState::JWL::unreacted() const
+{
+    if (!unreacted_.valid())
+    {
+        FatalErrorInFunction
+            << "JWL material " << name_ << " has no unreacted explosive:"
+            << " give an explosive preset or an 'unreacted' dictionary"
+            << " (K0, n, Gamma)" << exit(FatalError);
+    }
+    return unreacted_();
+}
+
 
 void Foam::equationsOfState::JWL::write(Ostream& os) const
 {
@@ -146,6 +212,11 @@ void Foam::equationsOfState::JWL::write(Ostream& os) const
         << " R1 " << R1_ << " R2 " << R2_ << " omega " << omega_
         << " E0 " << E0_ << " (constant-volume explosion pressure "
         << pCV() << " Pa)" << nl;
+    if (unreacted_.valid())
+    {
+        os  << "    ";
+        unreacted_->write(os);
+    }
 }
 
 
