@@ -483,6 +483,38 @@ const equationsOfState::JWL& explosiveOf
 }
 
 
+//- The JWL set's CJ point; a burn velocity off D_CJ warned about
+void reportCJ
+(
+    const equationsOfState::JWL& jwl,
+    const PtrList<chargeInitiation>& initiations,
+    const PtrList<dictionary>& chargeDicts
+)
+{
+    scalar DCJ = 0, pCJ = 0, rhoCJ = 0;
+    jwl.chapmanJouguet(101325, DCJ, pCJ, rhoCJ);
+    Info<< "JWL CJ point (from 1 atm): D_CJ " << DCJ << " m/s, p_CJ " << pCJ
+        << " Pa, rho_CJ " << rhoCJ << " kg/m3" << endl;
+    forAll(initiations, c)
+    {
+        const scalar D = initiations[c].D();
+        if (initiations[c].burn() && mag(D/DCJ - 1) > 0.005)
+        {
+            WarningInFunction
+                << chargeDicts[c].name() << ": detonation velocity " << D
+                << " m/s is " << 100*(D/DCJ - 1) << " % off the CJ velocity"
+                << " of the JWL set, " << DCJ << " m/s: "
+                << (D > DCJ
+                    ? "the burn drives a weak detonation (front pressure"
+                      " below p_CJ)"
+                    : "the products outrun the burn (the front is not"
+                      " a steady detonation)")
+                << nl << "    (set detonationVelocity " << DCJ
+                << " for a CJ detonation)" << endl;
+        }
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -535,6 +567,10 @@ int main(int argc, char *argv[])
     forAll(initiations, c)
     {
         anyBurn = anyBurn || initiations[c].burn();
+    }
+    if (anyBurn)
+    {
+        reportCJ(jwl, initiations, chargeDicts);
     }
 
     const word& m1 = mixture.materials()[0];

@@ -10,7 +10,9 @@ Taylor wave behind it on the isentrope through the CJ point,
 a centred simple wave x/t = u + c with u = u_CJ - int_{V_CJ}^{V} c/V' dV',
 then the plateau u = 0 from the wall to x = c_p t.
 
-    check.py [--t0 T] [--inert] case [case ...]   (cases coarse to fine)
+    check.py [--t0 T] [--inert] [--refinement] case [case ...]
+    --t0: initiation time; --inert: the charge's pressure until t0;
+    --refinement: the cases are one problem, coarse to fine (errors must fall)
 Exit status 1 if a figure fails."""
 import re, sys, os, glob
 import numpy as np
@@ -83,6 +85,13 @@ class Exact:
         r = minimize_scalar(D2, bounds=(0.5, 0.99), method="bounded",
                             options={"xatol": 1e-12})
         s.VCJ, s.DCJ, s.pCJ = r.x, np.sqrt(D2(r.x)), hugoniot(r.x)
+        # A burn faster than D_CJ drives a weak detonation: the lower
+        # intersection of its Rayleigh line with the Hugoniot
+        s.weak = D > s.DCJ*(1 + 1e-3)
+        s.pFront = s.pCJ
+        if s.weak:
+            Vw = brentq(lambda V: D2(V) - D**2, s.VCJ, 0.9999)
+            s.pFront = hugoniot(Vw)
         s.uCJ = s.DCJ*(1 - s.VCJ)
         s.C = (s.pCJ - s.A*np.exp(-s.R1*s.VCJ) - s.B*np.exp(-s.R2*s.VCJ)) \
             * s.VCJ**(1 + s.omega)
@@ -126,6 +135,10 @@ def analyse(case, t0, inert):
     tag = f"{os.path.basename(case.rstrip('/'))} ({nx} cells)"
     print(f"{tag}: JWL CJ point D_CJ {ex.DCJ:.1f} m/s, p_CJ {ex.pCJ/1e9:.4f} GPa,"
           f" burn D {D:.1f} m/s; Taylor plateau p {ex.pp/1e9:.4f} GPa, c {ex.cp:.1f} m/s")
+    if ex.weak:
+        print(f"{tag}: burn D above D_CJ: weak detonation, front pressure "
+              f"{ex.pFront/1e9:.4f} GPa; the Taylor wave below is the CJ "
+              "isentrope's, printed but not checked")
     charge = x < 0.1
     p0 = read_field(case, "0", "p", nx)
     if inert:
@@ -139,7 +152,7 @@ def analyse(case, t0, inert):
     tf, xf = [], []
     for t in after:
         p = read_field(case, t, "p", nx)
-        half = 0.5*ex.pCJ
+        half = 0.5*ex.pFront
         i = np.nonzero(p > half)[0][-1]      # last cell above p_CJ/2
         xf.append(x[i] + (p[i] - half)/(p[i] - p[i + 1])*dx)
         tf.append(float(t) - t0)
@@ -149,14 +162,16 @@ def analyse(case, t0, inert):
     t = float(after[-1]) - t0
     p = read_field(case, after[-1], "p", nx)
     peak = p.max()
-    ePeak = abs(peak/ex.pCJ - 1)
-    figure(f"{tag} peak pressure behind the front (Pa)", peak, ex.pCJ,
-           TOL_PCJ, ePeak, ePeak < TOL_PCJ)
+    ePeak = abs(peak/ex.pFront - 1)
+    figure(f"{tag} peak pressure behind the front (Pa)"
+           + (" vs weak detonation" if ex.weak else " vs p_CJ"), peak,
+           ex.pFront, TOL_PCJ, ePeak, ePeak < TOL_PCJ)
     wall = x < 0.5*ex.cp*t
     pPl = p[wall].mean()
     ePl = abs(pPl/ex.pp - 1)
-    figure(f"{tag} Taylor-wave plateau pressure (Pa)", pPl, ex.pp,
-           TOL_PLATEAU, ePl, ePl < TOL_PLATEAU)
+    nc = " (not checked: weak)" if ex.weak else ""
+    figure(f"{tag} Taylor-wave plateau pressure (Pa){nc}", pPl, ex.pp,
+           TOL_PLATEAU, ePl, ex.weak or ePl < TOL_PLATEAU)
     # Extent: where p first rises 5 % above the plateau, numerical and exact
     rise = 1.05
     iN = np.nonzero(p > rise*pPl)[0][0]
@@ -164,8 +179,8 @@ def analyse(case, t0, inert):
     Vr = brentq(lambda V: ex.ps(V) - rise*ex.pp, ex.VCJ, ex.Vp)
     xE = (ex.u(Vr) + ex.c(Vr))*t
     eX = abs(xN/xE - 1)
-    figure(f"{tag} plateau extent to p = 1.05 p_plateau (m)", xN, xE,
-           TOL_PLATEAU, eX, eX < TOL_PLATEAU)
+    figure(f"{tag} plateau extent to p = 1.05 p_plateau (m){nc}", xN, xE,
+           TOL_PLATEAU, eX, ex.weak or eX < TOL_PLATEAU)
     print(f"{tag}: plateau end c_p t = {ex.cp*t:.5f} m at t - t0 = {t:.3g} s")
     inFan = x < 0.9*D*t
     pe = np.array([ex.p(xi, t) for xi in x[inFan]])
@@ -175,15 +190,17 @@ def analyse(case, t0, inert):
 
 
 def main(args):
-    t0, inert = 0.0, False
+    t0, inert, refinement = 0.0, False, False
     while args and args[0].startswith("--"):
         a = args.pop(0)
         if a == "--t0":
             t0 = float(args.pop(0))
         elif a == "--inert":
             inert = True
+        elif a == "--refinement":
+            refinement = True
     results = [analyse(c, t0, inert) for c in args]
-    if len(results) > 1:
+    if refinement:
         e = [r[0] for r in results]
         figure("peak pressure error fine/coarse (converging: < 1)",
                e[-1]/e[0], tol=1, ok=e[-1] < e[0])

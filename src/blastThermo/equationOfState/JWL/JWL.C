@@ -159,34 +159,34 @@ void Foam::equationsOfState::JWL::readUnreacted
     {
         return;
     }
-    dictionary u;
-    if (preset)
+    // The unreacted explosive has the JWL's rho0 and q = E0/rho0; the
+    // preset's stiffness (K0 = rho0 c0^2 with the rho0 in use, n = 4 s - 1)
+    // unless given
+    const dictionary& u = dict.subOrEmptyDict("unreacted");
+    for (const entry& e : u)
     {
-        // K0 = rho0 c0^2 with the rho0 in use: the preset sound speed
-        u.add("K0", rho0_*sqr(c0));
-        u.add("n", 4*s - 1);
-        u.add("Gamma", 1.0);
-    }
-    if (dict.found("unreacted"))
-    {
-        const dictionary& ud = dict.subDict("unreacted");
-        for (const entry& e : ud)
+        const word& key = e.keyword();
+        if (key != "K0" && key != "n" && key != "Gamma" && key != "p0")
         {
-            if (e.keyword() == "rho0" || e.keyword() == "q")
-            {
-                FatalIOErrorInFunction(ud)
-                    << "JWL material " << name_ << ": entry 'unreacted."
-                    << e.keyword() << "' is not allowed: the unreacted"
-                    << " explosive has the JWL's rho0 and q = E0/rho0"
-                    << exit(FatalIOError);
-            }
-            u.set(e);
+            FatalIOErrorInFunction(u)
+                << "JWL material " << name_ << ": unknown entry 'unreacted."
+                << key << "'. Valid: K0 n Gamma p0 (rho0 and q = E0/rho0"
+                << " are the JWL's)" << exit(FatalIOError);
         }
-        u.name() = ud.name();
     }
-    u.set("rho0", rho0_);
-    u.set("q", E0_/rho0_);
-    unreacted_.reset(new Murnaghan(name_ + ".unreacted", u));
+    const scalar K0 =
+        preset ? u.getOrDefault<scalar>("K0", rho0_*sqr(c0)) : u.get<scalar>("K0");
+    const scalar n =
+        preset ? u.getOrDefault<scalar>("n", 4*s - 1) : u.get<scalar>("n");
+    unreacted_.reset
+    (
+        new Murnaghan
+        (
+            name_ + ".unreacted", u, rho0_, K0, n,
+            u.getOrDefault<scalar>("Gamma", 1.0), E0_/rho0_,
+            u.getOrDefault<scalar>("p0", 101325)
+        )
+    );
 }
 
 
@@ -203,6 +203,53 @@ Foam::equationsOfState::JWL::unreacted() const
             << " (K0, n, Gamma)" << exit(FatalError);
     }
     return unreacted_();
+}
+
+
+void Foam::equationsOfState::JWL::chapmanJouguet
+(
+    const scalar p0,
+    scalar& DCJ,
+    scalar& pCJ,
+    scalar& rhoCJ
+) const
+{
+    // Hugoniot e - e0 = (p + p0)/2 (v0 - v) with p = omega e/v + pRef:
+    // explicit in p. D^2 = (p - p0)/(rho0^2 (v0 - v)) is unimodal in
+    // V = v/v0 on (0.5, 1): golden-section search for its minimum
+    const scalar v0 = 1/rho0_, e0 = E0_/rho0_, w = omega_;
+    auto hugoniot = [&](const scalar V)
+    {
+        const scalar v = V*v0;
+        return
+            (w/v*e0 + w*p0*(v0 - v)/(2*v) + pRefI(rho0_/V))
+           /(1 - w*(v0 - v)/(2*v));
+    };
+    auto D2 = [&](const scalar V)
+    {
+        return (hugoniot(V) - p0)/(sqr(rho0_)*(v0 - V*v0));
+    };
+    const scalar g = 0.5*(sqrt(5.0) - 1);
+    scalar a = 0.5, b = 0.999;
+    scalar x1 = b - g*(b - a), x2 = a + g*(b - a);
+    scalar f1 = D2(x1), f2 = D2(x2);
+    for (label it = 0; it < 200 && b - a > 1e-13; ++it)
+    {
+        if (f1 < f2)
+        {
+            b = x2; x2 = x1; f2 = f1;
+            x1 = b - g*(b - a); f1 = D2(x1);
+        }
+        else
+        {
+            a = x1; x1 = x2; f1 = f2;
+            x2 = a + g*(b - a); f2 = D2(x2);
+        }
+    }
+    const scalar V = 0.5*(a + b);
+    DCJ = sqrt(D2(V));
+    pCJ = hugoniot(V);
+    rhoCJ = rho0_/V;
 }
 
 

@@ -35,12 +35,44 @@ Foam::equationsOfState::Murnaghan::Murnaghan
     p0_(dict.getOrDefault<scalar>("p0", 101325))
 {
     checkEntries(dict, wordList({"rho0", "K0", "n", "Gamma", "q", "p0"}));
-    if (q_ < 0 || p0_ < 0)
+    check(dict);
+}
+
+
+Foam::equationsOfState::Murnaghan::Murnaghan
+(
+    const word& name,
+    const dictionary& dict,
+    const scalar rho0,
+    const scalar K0,
+    const scalar n,
+    const scalar Gamma,
+    const scalar q,
+    const scalar p0
+)
+:
+    mieGruneisenEOS<Murnaghan>(name, dict),
+    rho0_(rho0), K0_(K0), n_(n), Gamma_(Gamma), q_(q), p0_(p0)
+{
+    check(dict);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::equationsOfState::Murnaghan::check(const dictionary& dict) const
+{
+    if
+    (
+        !(rho0_ > 0) || !(K0_ > 0) || !(n_ > 0) || !(Gamma_ > 0)
+     || !(q_ >= 0) || !(p0_ >= 0)
+    )
     {
         FatalIOErrorInFunction(dict)
-            << "Material " << name << " (Murnaghan): entries 'q' and 'p0'"
-            << " must be >= 0, got q " << q_ << " p0 " << p0_
-            << exit(FatalIOError);
+            << "Material " << name_ << " (Murnaghan): need rho0, K0, n,"
+            << " Gamma > 0 and q, p0 >= 0, got rho0 " << rho0_ << " K0 "
+            << K0_ << " n " << n_ << " Gamma " << Gamma_ << " q " << q_
+            << " p0 " << p0_ << exit(FatalIOError);
     }
 }
 
