@@ -5,7 +5,8 @@
 #     the charge stays inert until t0 (max |p/p0 - 1| < 1e-6 at the writes
 #     before t0), then detonates: detonation velocity, CJ pressure and
 #     Taylor wave against the exact solution (programmedBurnData/check.py);
-#     a restart from 8 us ends bitwise equal to the uninterrupted run.
+#     a restart from 8 us ends bitwise equal to the uninterrupted run, and
+#     the run on 2 ranks equals the serial one.
 #  2. TNT in plan view (no primer: the whole charge 0.02..0.06 m lit at
 #     1 us): the charge's interior reaches the constant-volume explosion
 #     pressure of the JWL set (the energy E0 released in place; 1e-5: the
@@ -48,6 +49,37 @@ if [ $same = 1 ]; then
 else
     echo ">> restart from 8e-06: fields at 1.3e-05 differ  <-- FAIL"; fail=1
 fi
+
+# The same on 2 ranks (the charge, its lighting times and the front cross
+# the processor boundary at x = 0.06)
+prepare petnPar
+cp petn/constant/thermophysicalProperties petnPar/constant/
+cp petn/system/controlDict petn/system/setChargeDict petnPar/system/
+cat > petnPar/system/decomposeParDict <<'EOD'
+FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
+numberOfSubdomains 2;
+method simple;
+coeffs { n (2 1 1); }
+EOD
+(
+    cd petnPar
+    setCharge > log.setCharge 2>&1
+    decomposePar > log.decomposePar 2>&1
+    mpirun -np 2 jwlIbFoam -parallel > log.jwlIbFoam 2>&1
+    reconstructPar -latestTime > log.reconstructPar 2>&1
+)
+/usr/bin/python3 - <<'EOD' || fail=1
+import sys
+sys.path.insert(0, "%s/tests/regression/programmedBurnData" % __import__("os").environ["JWLIBFOAM_PROJECT"])
+from check import read_field
+import numpy as np
+a = read_field("petn", "1.3e-05", "p", 600)
+b = read_field("petnPar", "1.3e-05", "p", 600)
+d = np.abs(b - a).max()/np.abs(a).max()
+ok = d < 1e-10
+print(f">> 2 ranks vs serial: max |p_2 - p_1|/max p at 1.3e-05 = {d:.3g}, tolerance 1e-10" + ("" if ok else "  <-- FAIL"))
+sys.exit(0 if ok else 1)
+EOD
 
 # 2. plan view: whole charge lit at 1 us
 prepare plan

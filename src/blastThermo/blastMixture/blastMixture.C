@@ -102,11 +102,22 @@ void Foam::blastMixture::material1
             << "Material " << materials_[0] << " has no unreacted state but"
             << " a burn fraction was given" << exit(FatalError);
     }
+    // Burnt everywhere (after the burn, or outside the charges): the
+    // products' equation of state as it is
+    const UList<scalar>& F = *burn;
+    label first = 0;
+    while (first < n && F[first] >= 1)
+    {
+        ++first;
+    }
+    if (first == n)
+    {
+        return;
+    }
     SubList<scalar> gu(gu_, n), fu(fu_, n), du(du_, n);
     unreacted_->Gamma(r1, gu);
     unreacted_->pRefAndDerivative(r1, fu, du);
-    const UList<scalar>& F = *burn;
-    for (label i = 0; i < n; ++i)
+    for (label i = first; i < n; ++i)
     {
         const scalar Fi = F[i];
         if (Fi < 1)
