@@ -1662,6 +1662,23 @@ void Foam::blastFluidSolver::report(Ostream& os) const
         os  << "    ";
         mixture_.eos(i).write(os);
     }
+    if (burn_.valid())
+    {
+        const scalarField& tau = burn_->burnTime().primitiveField();
+        const scalarField& tb = burn_->lightingTime().primitiveField();
+        label nBurn = 0;
+        scalar t0 = GREAT, t1 = -GREAT;
+        forAll(tau, i)
+        {
+            if (tau[i] > 0)
+            {
+                ++nBurn; t0 = min(t0, tb[i]); t1 = max(t1, tb[i]);
+            }
+        }
+        os  << "    programmed burn: " << returnReduce(nBurn, sumOp<label>())
+            << " cells lit from " << returnReduce(t0, minOp<scalar>())
+            << " s to " << returnReduce(t1, maxOp<scalar>()) << " s" << nl;
+    }
     forAll(patchKind_, patchi)
     {
         static const char* kinds[] =
