@@ -515,6 +515,156 @@ void reportCJ
     }
 }
 
+//- Mass and cells of each charge
+struct chargeTally
+{
+    scalarList mass;
+    labelList nFull, nPartial;
+
+    explicit chargeTally(const label n)
+    :
+        mass(n, scalar(0)), nFull(n, label(0)), nPartial(n, label(0))
+    {}
+};
+
+
+//- Add a cell's samples (hits of nTot per charge) to the tally; returns
+//  the number of samples in programmed-burn charges and sets the earliest
+//  lighting time among those (tbCell, with its burn time tauCell)
+label tallyCell
+(
+    const label celli,
+    const boundBox& bb,
+    const label nTot,
+    const labelList& hits,
+    const PtrList<chargeInitiation>& initiations,
+    const scalar burnWidth,
+    const fvMesh& mesh,
+    const scalar rho0,
+    chargeTally& tally,
+    scalar& tbCell,
+    scalar& tauCell
+)
+{
+    label nBurn = 0;
+    forAll(hits, c)
+    {
+        if (!hits[c]) continue;
+        tally.mass[c] += scalar(hits[c])/nTot*mesh.V()[celli]*rho0;
+        (hits[c] == nTot ? tally.nFull[c] : tally.nPartial[c])++;
+        const chargeInitiation& ini = initiations[c];
+        if (!ini.burn()) continue;
+        nBurn += hits[c];
+        const scalar t = ini.lightingTime(mesh.C()[celli]);
+        if (t < tbCell)
+        {
+            tbCell = t;
+            tauCell = burnWidth*cellSize(bb, mesh.solutionD())/ini.D();
+        }
+    }
+    return nBurn;
+}
+
+
+//- Report each charge; stop if one covers no cell (before anything is
+//  written)
+void reportCharges
+(
+    const PtrList<chargeShape>& charges,
+    const PtrList<chargeInitiation>& initiations,
+    const PtrList<dictionary>& chargeDicts,
+    chargeTally& tally,
+    const equationsOfState::JWL& jwl,
+    const fvMesh& mesh
+)
+{
+    forAll(charges, c)
+    {
+        reduce(tally.mass[c], sumOp<scalar>());
+        reduce(tally.nFull[c], sumOp<label>());
+        reduce(tally.nPartial[c], sumOp<label>());
+        Info<< "Charge " << c << " (" << charges[c].type() << "): "
+            << tally.nFull[c] << " cells covered, " << tally.nPartial[c]
+            << " partially; mass " << tally.mass[c] << " kg, energy "
+            << tally.mass[c]/jwl.rho0()*jwl.E0() << " J; ";
+        initiations[c].report(Info);
+        Info<< endl;
+    }
+    // A charge that covers no cell is a mistake (outside the mesh, or too
+    // small for nSample)
+    forAll(charges, c)
+    {
+        if (tally.nFull[c] + tally.nPartial[c] == 0)
+        {
+            FatalIOErrorInFunction(chargeDicts[c])
+                << "Charge " << c << " (" << charges[c].type()
+                << ") in entry 'charges' covers no cell of the mesh (bounds "
+                << mesh.bounds() << "): check its position and size, or"
+                << " raise 'nSample'" << exit(FatalIOError);
+        }
+    }
+}
+
+
+//- The fields setCharge writes
+struct chargeFields
+{
+    volScalarField& p;
+    volVectorField& U;
+    volScalarField& alpha;
+    volScalarField& rho1;
+    volScalarField& rho2;
+    volScalarField& tb;
+    volScalarField& tau;
+};
+
+
+//- Put the fraction f of explosive into cell i, conserving mass and, for a
+//  constant-volume charge, energy; a programmed-burn charge keeps the
+//  ambient pressure (unreacted explosive, holding E0) and gets its
+//  lighting time tbCell and burn time tauCell
+void mixCell
+(
+    const label i,
+    const scalar f,
+    const bool burn,
+    const scalar tbCell,
+    const scalar tauCell,
+    const blastMixture& mixture,
+    const equationsOfState::JWL& jwl,
+    const scalar t,
+    chargeFields& fld
+)
+{
+    const scalar rho0 = jwl.rho0(), aMin = mixture.alphaMin();
+    // Ambient state of the cell
+    const scalar aA = fld.alpha[i];
+    const scalar r1A = fld.rho1[i], r2A = fld.rho2[i];
+    const scalar rhoA = aA*r1A + (1 - aA)*r2A;
+    const scalar F0 = programmedBurn::fraction(t, fld.tb[i], fld.tau[i]);
+    const scalar rhoeA = mixture.rhoe(aA, r1A, r2A, fld.p[i], F0);
+
+    const scalar a = min(max(f + (1 - f)*aA, aMin), 1 - aMin);
+    const scalar r1 = (f*rho0 + (1 - f)*aA*r1A)/a;
+    const scalar r2 = (f < 1) ? r2A : rho0;
+    const scalar rho = a*r1 + (1 - a)*r2;
+
+    fld.alpha[i] = a;
+    fld.rho1[i] = r1;
+    fld.rho2[i] = r2;
+    if (burn)
+    {
+        fld.tb[i] = tbCell;
+        fld.tau[i] = tauCell;
+    }
+    else
+    {
+        const scalar rhoe = f*jwl.E0() + (1 - f)*rhoeA;
+        fld.p[i] = mixture.p(a, r1, r2, rhoe, F0);
+    }
+    fld.U[i] = (1 - f)*rhoA*fld.U[i]/rho;
+}
+
 } // End anonymous namespace
 
 
@@ -541,7 +691,6 @@ int main(int argc, char *argv[])
     const equationsOfState::JWL& jwl = explosiveOf(mixture, thermo);
     const scalar rho0 = jwl.rho0();
     const scalar E0 = jwl.E0();
-    const scalar aMin = mixture.alphaMin();
 
     IOdictionary dict
     (
@@ -608,10 +757,9 @@ int main(int argc, char *argv[])
     const scalarField& V = mesh.V();
     const vectorField& C = mesh.C();
 
-    scalarList chargeMass(charges.size(), scalar(0));
-    labelList nFull(charges.size(), label(0));
-    labelList nPartial(charges.size(), label(0));
+    chargeTally tally(charges.size());
     scalar totalMass = 0;
+    chargeFields fields{p, U, alpha, rho1, rho2, tb, tau};
     labelList hits(charges.size(), label(0));
 
     forAll(V, celli)
@@ -622,24 +770,12 @@ int main(int argc, char *argv[])
         if (nIn == 0) continue;
 
         const scalar f = scalar(nIn)/nTot;
-        // Programmed burn: the earliest lighting time of the cell's charges
-        label nBurn = 0;
         scalar tbCell = GREAT, tauCell = 0;
-        forAll(charges, c)
-        {
-            if (!hits[c]) continue;
-            chargeMass[c] += scalar(hits[c])/nTot*V[celli]*rho0;
-            (hits[c] == nTot ? nFull[c] : nPartial[c])++;
-            const chargeInitiation& ini = initiations[c];
-            if (!ini.burn()) continue;
-            nBurn += hits[c];
-            const scalar t = ini.lightingTime(C[celli]);
-            if (t < tbCell)
-            {
-                tbCell = t;
-                tauCell = burnWidth*cellSize(bb, solD)/ini.D();
-            }
-        }
+        const label nBurn = tallyCell
+        (
+            celli, bb, nTot, hits, initiations, burnWidth, mesh, rho0,
+            tally, tbCell, tauCell
+        );
         if (nBurn > 0 && nBurn < nIn)
         {
             FatalIOErrorInFunction(dict)
@@ -650,66 +786,15 @@ int main(int argc, char *argv[])
         }
         totalMass += f*V[celli]*rho0;
 
-        // Ambient state of the cell
-        const scalar aA = alpha[celli];
-        const scalar r1A = rho1[celli], r2A = rho2[celli];
-        const scalar rhoA = aA*r1A + (1 - aA)*r2A;
-        const scalar F0 = programmedBurn::fraction
+        mixCell
         (
-            runTime.value(), tb[celli], tau[celli]
+            celli, f, nBurn > 0, tbCell, tauCell, mixture, jwl,
+            runTime.value(), fields
         );
-        const scalar rhoeA = mixture.rhoe(aA, r1A, r2A, p[celli], F0);
-
-        // Mixed state conserving mass (and the energy of constant-volume
-        // charges; unreacted explosive at the ambient pressure)
-        scalar a = min(max(f + (1 - f)*aA, aMin), 1 - aMin);
-        const scalar m1c = f*rho0 + (1 - f)*aA*r1A;
-        const scalar r1 = m1c/a;
-        const scalar r2 = (f < 1) ? r2A : rho0;
-        const scalar rho = a*r1 + (1 - a)*r2;
-
-        alpha[celli] = a;
-        rho1[celli] = r1;
-        rho2[celli] = r2;
-        if (nBurn > 0)
-        {
-            tb[celli] = tbCell;
-            tau[celli] = tauCell;
-        }
-        else
-        {
-            const scalar rhoe = f*E0 + (1 - f)*rhoeA;
-            p[celli] = mixture.p(a, r1, r2, rhoe, F0);
-        }
-        U[celli] = (1 - f)*rhoA*U[celli]/rho;
     }
 
     reduce(totalMass, sumOp<scalar>());
-    forAll(charges, c)
-    {
-        reduce(chargeMass[c], sumOp<scalar>());
-        reduce(nFull[c], sumOp<label>());
-        reduce(nPartial[c], sumOp<label>());
-        Info<< "Charge " << c << " (" << charges[c].type() << "): "
-            << nFull[c] << " cells covered, " << nPartial[c]
-            << " partially; mass " << chargeMass[c] << " kg, energy "
-            << chargeMass[c]/rho0*E0 << " J; ";
-        initiations[c].report(Info);
-        Info<< endl;
-    }
-    // A charge that covers no cell is a mistake (outside the mesh, or too
-    // small for nSample): stop before anything is written
-    forAll(charges, c)
-    {
-        if (nFull[c] + nPartial[c] == 0)
-        {
-            FatalIOErrorInFunction(chargeDicts[c])
-                << "Charge " << c << " (" << charges[c].type()
-                << ") in entry 'charges' covers no cell of the mesh (bounds "
-                << mesh.bounds() << "): check its position and size, or"
-                << " raise 'nSample'" << exit(FatalIOError);
-        }
-    }
+    reportCharges(charges, initiations, chargeDicts, tally, jwl, mesh);
 
     Info<< "Explosive " << m1 << ": rho0 " << rho0 << " kg/m3, E0 " << E0
         << " J/m3, constant-volume explosion pressure " << jwl.pCV()
