@@ -9,30 +9,54 @@ Application
     setCharge
 
 Description
-    Places explosive charges in the constant-volume explosion state (products
-    at rho0, e = E0/rho0, at rest) into the fields of the start time of a
+    Places explosive charges into the fields of the start time of a
     two-material jwlIbFoam case, and reports the mass and energy of each
     charge (in the mesh volume: per unit depth of a 2D mesh, the wedge's
-    share of an axisymmetric one).
+    share of an axisymmetric one). A charge starts either in the
+    constant-volume explosion state (products at rho0, e = E0/rho0, at rest;
+    the default) or, with 'initiationTime', as unreacted explosive that a
+    programmed burn (programmedBurn, doc/programmedBurn.md) converts to
+    products when the detonation front arrives: lighting time
+        t_b = t0 + |x - primer|/D    (no primer: t_b = t0 in the charge)
+    at the cell centre, burn time tau_b = w dx/D (dx: the smallest extent
+    of the cell in the solved directions, w = burnWidth cells), written as
+    the fields lightingTime and burnTime (cells outside programmed-burn
+    charges: tau_b = 0, burnt).
 
     The products are the first material of constant/thermophysicalProperties
     and must use the JWL equation of state (rho0, E0). The fields already in
     the start time (p, U, alpha.<m1>, rho.<m1>, rho.<m2>) are the ambient.
     A cell covered by the fraction f (sub-sampled on nSample points per
-    solved direction of its bounding box) gets, conserving mass and energy,
+    solved direction of its bounding box) gets, conserving mass,
         alpha = f + (1 - f) alpha_a,  alpha rho1 = f rho0 + (1-f) alpha_a rho1_a,
+    and, constant-volume charges, conserving energy
         rho e = f E0 + (1 - f) (rho e)_a
-    and the equilibrium pressure of the mixture rule.
+    and the equilibrium pressure of the mixture rule; programmed-burn
+    charges keep the ambient pressure (the unreacted explosive at rho0 holds
+    E0 in its internal energy, Murnaghan). A cell may not hold charges of
+    both kinds.
 
     Dictionary system/setChargeDict:
     \verbatim
         nSample     8;                      // sub-samples per direction
+        burnWidth   2;                      // programmed burn: cells the
+                                            // burn front spreads over (> 0)
         charges
         (
             box      { min (0 0 0); max (0.1 0.1 1); }
             circle   { centre (0 0 0); radius 0.05; axis (0 0 1); }
             cylinder { point1 (0 0 0); point2 (0 0 0.2); radius 0.02; }
-            sphere   { centre (0 0 0); radius 0.05; }
+            sphere
+            {
+                centre (0 0 0); radius 0.05;
+                explosive products;         // optional: the explosive
+                                            // material (the first one)
+                initiationTime 1e-5;        // programmed burn from t0 (s)
+                primer (0 0 0);             // optional primer point in the
+                                            // charge (else the whole charge
+                                            // is lit at t0: plan view)
+                detonationVelocity 6930;    // optional, default the JWL's D
+            }
         );
     \endverbatim
 
@@ -43,6 +67,7 @@ Description
 #include "blastMixture.H"
 #include "JWL.H"
 #include "boundBox.H"
+#include "programmedBurn.H"
 
 using namespace Foam;
 
@@ -110,6 +135,17 @@ public:
 
     const word& type() const { return type_; }
 
+    //- The entries of the shape
+    wordList entries() const
+    {
+        if (type_ == "box") return wordList({"min", "max"});
+        if (type_ == "cylinder")
+        {
+            return wordList({"point1", "point2", "radius"});
+        }
+        return wordList({"centre", "radius", "axis"});
+    }
+
     bool inside(const point& x) const
     {
         if (type_ == "box")
@@ -138,28 +174,295 @@ public:
     }
 };
 
-} // End anonymous namespace
 
 
-int main(int argc, char *argv[])
+//- How a charge starts: constant-volume explosion or programmed burn
+class chargeInitiation
 {
-    argList::addNote
-    (
-        "Place explosive charges in the constant-volume explosion state"
-    );
-    #include "setRootCase.H"
-    #include "createTime.H"
-    #include "createMesh.H"
+    bool burn_;
+    scalar t0_, D_;
+    bool hasPrimer_;
+    point primer_;
 
-    IOdictionary thermo
+public:
+
+    //- Read and check the entries of a charge's dictionary
+    chargeInitiation
     (
-        IOobject
+        const dictionary& dict,
+        const chargeShape& shape,
+        const blastMixture& mixture,
+        const equationsOfState::JWL& jwl,
+        const scalar startTime
+    )
+    :
+        burn_(dict.found("initiationTime")),
+        t0_(0), D_(jwl.D()), hasPrimer_(dict.found("primer")),
+        primer_(Zero)
+    {
+        const word m1 = mixture.materials()[0];
+        const word explosive(dict.getOrDefault<word>("explosive", m1));
+        if (explosive != m1)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'explosive' " << explosive << ": the explosive"
+                << " is the first material of thermophysicalProperties, "
+                << m1 << " (one explosive per case)" << exit(FatalIOError);
+        }
+        if (!burn_)
+        {
+            for (const char* key : {"primer", "detonationVelocity"})
+            {
+                if (dict.found(key))
+                {
+                    FatalIOErrorInFunction(dict)
+                        << "Entry '" << key << "' without 'initiationTime':"
+                        << " a programmed burn needs its initiation time"
+                        << " (a charge without it starts in the"
+                        << " constant-volume explosion state)"
+                        << exit(FatalIOError);
+                }
+            }
+            return;
+        }
+        readBurn(dict, shape, mixture, jwl, startTime);
+    }
+
+    void readBurn
+    (
+        const dictionary& dict,
+        const chargeShape& shape,
+        const blastMixture& mixture,
+        const equationsOfState::JWL& jwl,
+        const scalar startTime
+    )
+    {
+        if (!mixture.canBurn())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'initiationTime': the explosive "
+                << mixture.materials()[0] << " has no unreacted state (give"
+                << " it an explosive preset or an 'unreacted' dictionary in"
+                << " constant/thermophysicalProperties)" << exit(FatalIOError);
+        }
+        t0_ = dict.get<scalar>("initiationTime");
+        if (!(t0_ >= startTime))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'initiationTime' " << t0_ << " must be >= the start"
+                << " time " << startTime << exit(FatalIOError);
+        }
+        D_ = dict.getOrDefault<scalar>("detonationVelocity", jwl.D());
+        if (!(D_ > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'detonationVelocity' must be > 0, got " << D_
+                << " (no default: the JWL material " << mixture.materials()[0]
+                << " gives no D)" << exit(FatalIOError);
+        }
+        if (hasPrimer_)
+        {
+            primer_ = dict.get<point>("primer");
+            if (!shape.inside(primer_))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entry 'primer' " << primer_ << " lies outside the "
+                    << shape.type() << " charge" << exit(FatalIOError);
+            }
+        }
+    }
+
+    bool burn() const { return burn_; }
+    scalar D() const { return D_; }
+
+    //- Lighting time at x
+    scalar lightingTime(const point& x) const
+    {
+        return hasPrimer_ ? t0_ + mag(x - primer_)/D_ : t0_;
+    }
+
+    //- Description for the log
+    void report(Ostream& os) const
+    {
+        if (!burn_)
+        {
+            os  << "constant-volume explosion state";
+            return;
+        }
+        os  << "programmed burn from t0 = " << t0_ << " s, D = " << D_
+            << " m/s, ";
+        if (hasPrimer_) os << "primer " << primer_;
+        else os << "the whole charge lit at t0";
+    }
+};
+
+
+
+//- Sample the bounding box of a cell: the number of points in each charge
+//  (the first charge a point lies in) and the number of points
+label sampleCell
+(
+    const boundBox& bb,
+    const Vector<label>& solD,
+    const label nSample,
+    const PtrList<chargeShape>& charges,
+    labelList& hits
+)
+{
+    const label ns[3] =
+    {
+        solD[0] > 0 ? nSample : 1,
+        solD[1] > 0 ? nSample : 1,
+        solD[2] > 0 ? nSample : 1
+    };
+    hits = 0;
+    for (label i = 0; i < ns[0]; ++i)
+    for (label j = 0; j < ns[1]; ++j)
+    for (label k = 0; k < ns[2]; ++k)
+    {
+        const point x
         (
-            "thermophysicalProperties", runTime.constant(), mesh,
-            IOobject::MUST_READ, IOobject::NO_WRITE
-        )
-    );
-    const blastMixture mixture(thermo);
+            bb.min().x() + (i + 0.5)/ns[0]*bb.span().x(),
+            bb.min().y() + (j + 0.5)/ns[1]*bb.span().y(),
+            bb.min().z() + (k + 0.5)/ns[2]*bb.span().z()
+        );
+        forAll(charges, c)
+        {
+            if (charges[c].inside(x))
+            {
+                ++hits[c];
+                break;
+            }
+        }
+    }
+    return ns[0]*ns[1]*ns[2];
+}
+
+
+//- Smallest extent of a bounding box in the solved directions
+scalar cellSize(const boundBox& bb, const Vector<label>& solD)
+{
+    scalar dx = GREAT;
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (solD[d] > 0) dx = min(dx, bb.span()[d]);
+    }
+    return dx;
+}
+
+
+//- Read the charges of setChargeDict: shape and initiation, each with its
+//  dictionary named after the file so that errors name file and charge
+void readCharges
+(
+    const IOdictionary& dict,
+    const blastMixture& mixture,
+    const equationsOfState::JWL& jwl,
+    const scalar startTime,
+    PtrList<chargeShape>& charges,
+    PtrList<chargeInitiation>& initiations,
+    PtrList<dictionary>& chargeDicts
+)
+{
+    // A charge's entry given twice is an error, as in the file's own
+    // dictionaries (checkInput)
+    const entry::inputMode oldMode = entry::globalInputMode;
+    entry::globalInputMode = entry::inputMode::ERROR;
+    const PtrList<entry> entries(dict.lookup("charges"));
+    entry::globalInputMode = oldMode;
+    if (entries.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'charges' lists no charge" << exit(FatalIOError);
+    }
+    charges.setSize(entries.size());
+    initiations.setSize(entries.size());
+    chargeDicts.setSize(entries.size());
+    const wordList initiationKeys
+    ({
+        "explosive", "initiationTime", "primer", "detonationVelocity"
+    });
+    forAll(entries, i)
+    {
+        if (!entries[i].isDict())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'charges': each charge is 'shape { ... }'"
+                << exit(FatalIOError);
+        }
+        chargeDicts.set(i, new dictionary(dict, entries[i].dict()));
+        dictionary& cd = chargeDicts[i];
+        cd.name() = dict.objectPath() + ".charges." + entries[i].keyword();
+        caseChecks::readNaming
+        (
+            cd,
+            [&]()
+            {
+                charges.set(i, new chargeShape(entries[i].keyword(), cd));
+                wordList valid(charges[i].entries());
+                valid.append(initiationKeys);
+                for (const entry& e : cd)
+                {
+                    if (!valid.found(e.keyword()))
+                    {
+                        FatalIOErrorInFunction(cd)
+                            << "Unknown entry '" << e.keyword() << "' of a "
+                            << charges[i].type() << " charge. Valid: "
+                            << flatOutput(valid) << exit(FatalIOError);
+                    }
+                }
+                initiations.set
+                (
+                    i,
+                    new chargeInitiation
+                    (
+                        cd, charges[i], mixture, jwl, startTime
+                    )
+                );
+            }
+        );
+    }
+}
+
+
+//- Read the top-level entries of setChargeDict
+void readControls(const dictionary& dict, label& nSample, scalar& burnWidth)
+{
+    caseChecks::checkInput(dict);
+    for (const entry& e : dict)
+    {
+        const word& key = e.keyword();
+        if (key != "FoamFile" && key != "nSample" && key != "charges"
+         && key != "burnWidth")
+        {
+            FatalIOErrorInFunction(dict)
+                << "Unknown entry '" << key << "'. Valid entries: nSample"
+                << " burnWidth charges" << exit(FatalIOError);
+        }
+    }
+    nSample = dict.getOrDefault<label>("nSample", 8);
+    if (nSample < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'nSample' must be >= 1" << exit(FatalIOError);
+    }
+    burnWidth = dict.getOrDefault<scalar>("burnWidth", 2);
+    if (!(burnWidth > 0) || burnWidth > 100)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'burnWidth' must be in (0, 100] cells, got "
+            << burnWidth << exit(FatalIOError);
+    }
+}
+
+
+//- The explosive: the first material, a JWL
+const equationsOfState::JWL& explosiveOf
+(
+    const blastMixture& mixture,
+    const dictionary& thermo
+)
+{
     if (!mixture.twoPhase())
     {
         FatalIOErrorInFunction(thermo)
@@ -176,9 +479,218 @@ int main(int argc, char *argv[])
             << "') must be the detonation products (equationOfState JWL);"
             << " list the products first" << exit(FatalIOError);
     }
-    const scalar rho0 = jwl->rho0();
-    const scalar E0 = jwl->E0();
-    const scalar aMin = mixture.alphaMin();
+    return *jwl;
+}
+
+
+//- The JWL set's CJ point; a burn velocity off D_CJ warned about
+void reportCJ
+(
+    const equationsOfState::JWL& jwl,
+    const PtrList<chargeInitiation>& initiations,
+    const PtrList<dictionary>& chargeDicts
+)
+{
+    scalar DCJ = 0, pCJ = 0, rhoCJ = 0;
+    jwl.chapmanJouguet(101325, DCJ, pCJ, rhoCJ);
+    Info<< "JWL CJ point (from 1 atm): D_CJ " << DCJ << " m/s, p_CJ " << pCJ
+        << " Pa, rho_CJ " << rhoCJ << " kg/m3" << endl;
+    forAll(initiations, c)
+    {
+        const scalar D = initiations[c].D();
+        if (initiations[c].burn() && mag(D/DCJ - 1) > 0.005)
+        {
+            WarningInFunction
+                << chargeDicts[c].name() << ": detonation velocity " << D
+                << " m/s is " << 100*(D/DCJ - 1) << " % off the CJ velocity"
+                << " of the JWL set, " << DCJ << " m/s: "
+                << (D > DCJ
+                    ? "the burn drives a weak detonation (front pressure"
+                      " below p_CJ)"
+                    : "the products outrun the burn (the front is not"
+                      " a steady detonation)")
+                << nl << "    (set detonationVelocity " << DCJ
+                << " for a CJ detonation)" << endl;
+        }
+    }
+}
+
+//- Mass and cells of each charge
+struct chargeTally
+{
+    scalarList mass;
+    labelList nFull, nPartial;
+
+    explicit chargeTally(const label n)
+    :
+        mass(n, scalar(0)), nFull(n, label(0)), nPartial(n, label(0))
+    {}
+};
+
+
+//- Add a cell's samples (hits of nTot per charge) to the tally; returns
+//  the number of samples in programmed-burn charges and sets the earliest
+//  lighting time among those (tbCell, with its burn time tauCell)
+label tallyCell
+(
+    const label celli,
+    const boundBox& bb,
+    const label nTot,
+    const labelList& hits,
+    const PtrList<chargeInitiation>& initiations,
+    const scalar burnWidth,
+    const fvMesh& mesh,
+    const scalar rho0,
+    chargeTally& tally,
+    scalar& tbCell,
+    scalar& tauCell
+)
+{
+    label nBurn = 0;
+    forAll(hits, c)
+    {
+        if (!hits[c]) continue;
+        tally.mass[c] += scalar(hits[c])/nTot*mesh.V()[celli]*rho0;
+        (hits[c] == nTot ? tally.nFull[c] : tally.nPartial[c])++;
+        const chargeInitiation& ini = initiations[c];
+        if (!ini.burn()) continue;
+        nBurn += hits[c];
+        const scalar t = ini.lightingTime(mesh.C()[celli]);
+        if (t < tbCell)
+        {
+            tbCell = t;
+            tauCell = burnWidth*cellSize(bb, mesh.solutionD())/ini.D();
+        }
+    }
+    return nBurn;
+}
+
+
+//- Report each charge; stop if one covers no cell (before anything is
+//  written)
+void reportCharges
+(
+    const PtrList<chargeShape>& charges,
+    const PtrList<chargeInitiation>& initiations,
+    const PtrList<dictionary>& chargeDicts,
+    chargeTally& tally,
+    const equationsOfState::JWL& jwl,
+    const fvMesh& mesh
+)
+{
+    forAll(charges, c)
+    {
+        reduce(tally.mass[c], sumOp<scalar>());
+        reduce(tally.nFull[c], sumOp<label>());
+        reduce(tally.nPartial[c], sumOp<label>());
+        Info<< "Charge " << c << " (" << charges[c].type() << "): "
+            << tally.nFull[c] << " cells covered, " << tally.nPartial[c]
+            << " partially; mass " << tally.mass[c] << " kg, energy "
+            << tally.mass[c]/jwl.rho0()*jwl.E0() << " J; ";
+        initiations[c].report(Info);
+        Info<< endl;
+    }
+    // A charge that covers no cell is a mistake (outside the mesh, or too
+    // small for nSample)
+    forAll(charges, c)
+    {
+        if (tally.nFull[c] + tally.nPartial[c] == 0)
+        {
+            FatalIOErrorInFunction(chargeDicts[c])
+                << "Charge " << c << " (" << charges[c].type()
+                << ") in entry 'charges' covers no cell of the mesh (bounds "
+                << mesh.bounds() << "): check its position and size, or"
+                << " raise 'nSample'" << exit(FatalIOError);
+        }
+    }
+}
+
+
+//- The fields setCharge writes
+struct chargeFields
+{
+    volScalarField& p;
+    volVectorField& U;
+    volScalarField& alpha;
+    volScalarField& rho1;
+    volScalarField& rho2;
+    volScalarField& tb;
+    volScalarField& tau;
+};
+
+
+//- Put the fraction f of explosive into cell i, conserving mass and, for a
+//  constant-volume charge, energy; a programmed-burn charge keeps the
+//  ambient pressure (unreacted explosive, holding E0) and gets its
+//  lighting time tbCell and burn time tauCell
+void mixCell
+(
+    const label i,
+    const scalar f,
+    const bool burn,
+    const scalar tbCell,
+    const scalar tauCell,
+    const blastMixture& mixture,
+    const equationsOfState::JWL& jwl,
+    const scalar t,
+    chargeFields& fld
+)
+{
+    const scalar rho0 = jwl.rho0(), aMin = mixture.alphaMin();
+    // Ambient state of the cell
+    const scalar aA = fld.alpha[i];
+    const scalar r1A = fld.rho1[i], r2A = fld.rho2[i];
+    const scalar rhoA = aA*r1A + (1 - aA)*r2A;
+    const scalar F0 = programmedBurn::fraction(t, fld.tb[i], fld.tau[i]);
+    const scalar rhoeA = mixture.rhoe(aA, r1A, r2A, fld.p[i], F0);
+
+    const scalar a = min(max(f + (1 - f)*aA, aMin), 1 - aMin);
+    const scalar r1 = (f*rho0 + (1 - f)*aA*r1A)/a;
+    const scalar r2 = (f < 1) ? r2A : rho0;
+    const scalar rho = a*r1 + (1 - a)*r2;
+
+    fld.alpha[i] = a;
+    fld.rho1[i] = r1;
+    fld.rho2[i] = r2;
+    if (burn)
+    {
+        fld.tb[i] = tbCell;
+        fld.tau[i] = tauCell;
+    }
+    else
+    {
+        const scalar rhoe = f*jwl.E0() + (1 - f)*rhoeA;
+        fld.p[i] = mixture.p(a, r1, r2, rhoe, F0);
+    }
+    fld.U[i] = (1 - f)*rhoA*fld.U[i]/rho;
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Place explosive charges: constant-volume explosion state or"
+        " unreacted explosive with a programmed burn"
+    );
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    IOdictionary thermo
+    (
+        IOobject
+        (
+            "thermophysicalProperties", runTime.constant(), mesh,
+            IOobject::MUST_READ, IOobject::NO_WRITE
+        )
+    );
+    const blastMixture mixture(thermo);
+    const equationsOfState::JWL& jwl = explosiveOf(mixture, thermo);
+    const scalar rho0 = jwl.rho0();
+    const scalar E0 = jwl.E0();
 
     IOdictionary dict
     (
@@ -188,177 +700,104 @@ int main(int argc, char *argv[])
             IOobject::MUST_READ, IOobject::NO_WRITE
         )
     );
-    caseChecks::checkInput(dict);
-    const label nSample = dict.getOrDefault<label>("nSample", 8);
-    if (nSample < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'nSample' must be >= 1" << exit(FatalIOError);
-    }
+    label nSample = 8;
+    scalar burnWidth = 2;
+    readControls(dict, nSample, burnWidth);
 
-    // Each charge keeps its dictionary, named after setChargeDict, so that
-    // errors name the file, the charge and its line
     PtrList<chargeShape> charges;
+    PtrList<chargeInitiation> initiations;
     PtrList<dictionary> chargeDicts;
+    readCharges
+    (
+        dict, mixture, jwl, runTime.value(), charges, initiations,
+        chargeDicts
+    );
+    bool anyBurn = false;
+    forAll(initiations, c)
     {
-        // A charge's entry given twice is an error, as in the file's own
-        // dictionaries (checkInput)
-        const entry::inputMode oldMode = entry::globalInputMode;
-        entry::globalInputMode = entry::inputMode::ERROR;
-        const PtrList<entry> entries(dict.lookup("charges"));
-        entry::globalInputMode = oldMode;
-        if (entries.empty())
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'charges' lists no charge" << exit(FatalIOError);
-        }
-        charges.setSize(entries.size());
-        chargeDicts.setSize(entries.size());
-        forAll(entries, i)
-        {
-            if (!entries[i].isDict())
-            {
-                FatalIOErrorInFunction(dict)
-                    << "Entry 'charges': each charge is 'shape { ... }'"
-                    << exit(FatalIOError);
-            }
-            chargeDicts.set(i, new dictionary(dict, entries[i].dict()));
-            chargeDicts[i].name() =
-                dict.objectPath() + ".charges." + entries[i].keyword();
-            caseChecks::readNaming
-            (
-                chargeDicts[i],
-                [&]()
-                {
-                    charges.set
-                    (
-                        i,
-                        new chargeShape(entries[i].keyword(), chargeDicts[i])
-                    );
-                }
-            );
-        }
+        anyBurn = anyBurn || initiations[c].burn();
+    }
+    if (anyBurn)
+    {
+        reportCJ(jwl, initiations, chargeDicts);
     }
 
     const word& m1 = mixture.materials()[0];
     const word& m2 = mixture.materials()[1];
-    auto io = [&](const word& name)
+    auto io = [&](const word& name, const IOobject::readOption r)
     {
         return IOobject
         (
-            name, runTime.timeName(), mesh,
-            IOobject::MUST_READ, IOobject::AUTO_WRITE
+            name, runTime.timeName(), mesh, r, IOobject::AUTO_WRITE
         );
     };
-    volScalarField p(io("p"), mesh);
-    volVectorField U(io("U"), mesh);
-    volScalarField alpha(io("alpha." + m1), mesh);
-    volScalarField rho1(io("rho." + m1), mesh);
-    volScalarField rho2(io("rho." + m2), mesh);
+    volScalarField p(io("p", IOobject::MUST_READ), mesh);
+    volVectorField U(io("U", IOobject::MUST_READ), mesh);
+    volScalarField alpha(io("alpha." + m1, IOobject::MUST_READ), mesh);
+    volScalarField rho1(io("rho." + m1, IOobject::MUST_READ), mesh);
+    volScalarField rho2(io("rho." + m2, IOobject::MUST_READ), mesh);
+
+    // Burn fields: those of an earlier setCharge run, else all burnt
+    const bool hadBurn = programmedBurn::present(mesh);
+    const dimensionedScalar zeroTime(dimTime, Zero);
+    volScalarField tb
+    (
+        io("lightingTime", IOobject::READ_IF_PRESENT), mesh, zeroTime,
+        "zeroGradient"
+    );
+    volScalarField tau
+    (
+        io("burnTime", IOobject::READ_IF_PRESENT), mesh, zeroTime,
+        "zeroGradient"
+    );
 
     // Solved directions: sample only those
     const Vector<label>& solD = mesh.solutionD();
     const pointField& pts = mesh.points();
     const scalarField& V = mesh.V();
+    const vectorField& C = mesh.C();
 
-    scalarList chargeMass(charges.size(), scalar(0));
-    labelList nFull(charges.size(), label(0));
-    labelList nPartial(charges.size(), label(0));
+    chargeTally tally(charges.size());
     scalar totalMass = 0;
+    chargeFields fields{p, U, alpha, rho1, rho2, tb, tau};
+    labelList hits(charges.size(), label(0));
 
     forAll(V, celli)
     {
         const boundBox bb(pts, mesh.cellPoints()[celli], false);
-        const label ns[3] =
-        {
-            solD[0] > 0 ? nSample : 1,
-            solD[1] > 0 ? nSample : 1,
-            solD[2] > 0 ? nSample : 1
-        };
-        label nIn = 0, nTot = 0;
-        labelList hits(charges.size(), label(0));
-        for (label i = 0; i < ns[0]; ++i)
-        for (label j = 0; j < ns[1]; ++j)
-        for (label k = 0; k < ns[2]; ++k)
-        {
-            const point x
-            (
-                bb.min().x() + (i + 0.5)/ns[0]*bb.span().x(),
-                bb.min().y() + (j + 0.5)/ns[1]*bb.span().y(),
-                bb.min().z() + (k + 0.5)/ns[2]*bb.span().z()
-            );
-            ++nTot;
-            forAll(charges, c)
-            {
-                if (charges[c].inside(x))
-                {
-                    ++nIn;
-                    ++hits[c];
-                    break;
-                }
-            }
-        }
+        const label nTot = sampleCell(bb, solD, nSample, charges, hits);
+        const label nIn = sum(hits);
         if (nIn == 0) continue;
 
         const scalar f = scalar(nIn)/nTot;
-        forAll(charges, c)
+        scalar tbCell = GREAT, tauCell = 0;
+        const label nBurn = tallyCell
+        (
+            celli, bb, nTot, hits, initiations, burnWidth, mesh, rho0,
+            tally, tbCell, tauCell
+        );
+        if (nBurn > 0 && nBurn < nIn)
         {
-            if (hits[c])
-            {
-                chargeMass[c] += scalar(hits[c])/nTot*V[celli]*rho0;
-                (hits[c] == nTot ? nFull[c] : nPartial[c])++;
-            }
+            FatalIOErrorInFunction(dict)
+                << "Entry 'charges': cell " << celli << " (centre "
+                << C[celli] << ") holds a constant-volume and a"
+                << " programmed-burn charge: keep them a cell apart"
+                << exit(FatalIOError);
         }
         totalMass += f*V[celli]*rho0;
 
-        // Ambient state of the cell
-        const scalar aA = alpha[celli];
-        const scalar r1A = rho1[celli], r2A = rho2[celli];
-        const scalar rhoA = aA*r1A + (1 - aA)*r2A;
-        const scalar rhoeA = mixture.rhoe(aA, r1A, r2A, p[celli]);
-
-        // Mixed state conserving mass and energy
-        scalar a = min(max(f + (1 - f)*aA, aMin), 1 - aMin);
-        const scalar m1c = f*rho0 + (1 - f)*aA*r1A;
-        const scalar r1 = m1c/a;
-        const scalar r2 = (f < 1) ? r2A : rho0;
-        const scalar rho = a*r1 + (1 - a)*r2;
-        const scalar rhoe = f*E0 + (1 - f)*rhoeA;
-
-        alpha[celli] = a;
-        rho1[celli] = r1;
-        rho2[celli] = r2;
-        p[celli] = mixture.p(a, r1, r2, rhoe);
-        U[celli] = (1 - f)*rhoA*U[celli]/rho;
+        mixCell
+        (
+            celli, f, nBurn > 0, tbCell, tauCell, mixture, jwl,
+            runTime.value(), fields
+        );
     }
 
     reduce(totalMass, sumOp<scalar>());
-    forAll(charges, c)
-    {
-        reduce(chargeMass[c], sumOp<scalar>());
-        reduce(nFull[c], sumOp<label>());
-        reduce(nPartial[c], sumOp<label>());
-        Info<< "Charge " << c << " (" << charges[c].type() << "): "
-            << nFull[c] << " cells covered, " << nPartial[c]
-            << " partially; mass " << chargeMass[c] << " kg, energy "
-            << chargeMass[c]/rho0*E0 << " J" << endl;
-    }
-    // A charge that covers no cell is a mistake (outside the mesh, or too
-    // small for nSample): stop before anything is written
-    forAll(charges, c)
-    {
-        if (nFull[c] + nPartial[c] == 0)
-        {
-            FatalIOErrorInFunction(chargeDicts[c])
-                << "Charge " << c << " (" << charges[c].type()
-                << ") in entry 'charges' covers no cell of the mesh (bounds "
-                << mesh.bounds() << "): check its position and size, or"
-                << " raise 'nSample'" << exit(FatalIOError);
-        }
-    }
+    reportCharges(charges, initiations, chargeDicts, tally, jwl, mesh);
 
     Info<< "Explosive " << m1 << ": rho0 " << rho0 << " kg/m3, E0 " << E0
-        << " J/m3, constant-volume explosion pressure " << jwl->pCV()
+        << " J/m3, constant-volume explosion pressure " << jwl.pCV()
         << " Pa" << nl
         << "Total charge mass " << totalMass << " kg (in the mesh volume"
         << (mesh.nSolutionD() < 3 ? "; 2D: per mesh depth/wedge share" : "")
@@ -369,6 +808,13 @@ int main(int argc, char *argv[])
     alpha.write();
     rho1.write();
     rho2.write();
+    if (anyBurn || hadBurn)
+    {
+        tb.write();
+        tau.write();
+        Info<< "Programmed burn: wrote lightingTime and burnTime (burnWidth "
+            << burnWidth << " cells)" << endl;
+    }
 
     Info<< "End\n" << endl;
     return 0;

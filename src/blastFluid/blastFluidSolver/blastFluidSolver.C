@@ -187,6 +187,29 @@ void Foam::blastFluidSolver::readControls()
 }
 
 
+void Foam::blastFluidSolver::updateBurn(const scalar t)
+{
+    burn_->update(t);
+    const scalarField& F = burn_->burnFraction().primitiveField();
+    burnL_.setSize(nFaces_);
+    burnR_.setSize(nFaces_);
+    for (label f = 0; f < nFaces_; ++f)
+    {
+        burnL_[f] = F[own_[f]];
+        burnR_[f] = f < nInternal_ ? F[nei_[f]] : burnL_[f];
+    }
+    coupledNeighbourValues(burn_->burnFraction(), burnNbr_);
+    forAll(coupledFace_, j)
+    {
+        if (coupledFace_[j])
+        {
+            burnR_[nInternal_ + j] = burnNbr_[j];
+        }
+    }
+    primitivesCurrent_ = false;
+}
+
+
 void Foam::blastFluidSolver::setGeometry()
 {
     const fvBoundaryMesh& bm = mesh_.boundary();
@@ -332,7 +355,7 @@ void Foam::blastFluidSolver::conservativeFromPrimitive()
             rho[i] = alpha[i]*r1[i] + (1 - alpha[i])*r2[i];
             ar1[i] = alpha[i]*r1[i];
         }
-        mixture_.rhoeC2(n, alpha, r1, r2, rho, p, rhoe_, c_);
+        mixture_.rhoeC2(n, alpha, r1, r2, rho, p, rhoe_, c_, burnCells());
     }
     else
     {
@@ -435,7 +458,7 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
             r1[i] = max(m1/max(a, alphaEps), rhoFloor);
             r2[i] = max((rhoi - m1)/max(1 - a, alphaEps), rhoFloor);
         }
-        mixture_.pc2(n, alpha, r1, r2, rho, rhoe_, p, c_);
+        mixture_.pc2(n, alpha, r1, r2, rho, rhoe_, p, c_, burnCells());
     }
     else
     {
@@ -807,7 +830,8 @@ void Foam::blastFluidSolver::faceThermo()
         }
         mixture_.rhoeC2
         (
-            n, s.alphaL, rho1L_, rho2L_, s.rhoL, s.pL, workE_, workC2_
+            n, s.alphaL, rho1L_, rho2L_, s.rhoL, s.pL, workE_, workC2_,
+            burn_.valid() ? &burnL_ : nullptr
         );
         for (label f = 0; f < n; ++f)
         {
@@ -816,7 +840,8 @@ void Foam::blastFluidSolver::faceThermo()
         }
         mixture_.rhoeC2
         (
-            n, s.alphaR, rho1R_, rho2R_, s.rhoR, s.pR, workE_, workC2_
+            n, s.alphaR, rho1R_, rho2R_, s.rhoR, s.pR, workE_, workC2_,
+            burn_.valid() ? &burnR_ : nullptr
         );
         for (label f = 0; f < n; ++f)
         {
@@ -1384,6 +1409,22 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     rho0_.setSize(nCells); rhoU0_.setSize(nCells); rhoE0_.setSize(nCells);
     dRho_.setSize(nCells); dRhoU_.setSize(nCells); dRhoE_.setSize(nCells);
 
+    if (programmedBurn::present(mesh))
+    {
+        if (!twoPhase_ || !mixture_.canBurn())
+        {
+            FatalIOErrorInFunction(thermoDict_)
+                << "time " << mesh.time().timeName() << " has a lightingTime"
+                << " field (programmed burn, setCharge) but entry 'materials'"
+                << " " << mixture_.materials() << " has no explosive with an"
+                << " unreacted state: two materials, the first a JWL with an"
+                << " explosive preset or an 'unreacted' dictionary"
+                << exit(FatalIOError);
+        }
+        burn_.reset(new programmedBurn(mesh));
+        updateBurn(mesh.time().value());
+    }
+
     if (restart)
     {
         Info<< "blastFluidSolver: restart from the conservative state of time "
@@ -1482,6 +1523,13 @@ const Foam::scalar* Foam::blastFluidSolver::rkWeights() const
 
 void Foam::blastFluidSolver::advance(const scalar dt)
 {
+    if (burn_.valid())
+    {
+        // The equation of state of the whole step: burn fractions at its
+        // end (the present time), as the state written at that time and
+        // read by a restart: restarts stay bitwise
+        updateBurn(mesh_.time().value());
+    }
     if (cutCells_)
     {
         advanceCutCells(dt);
@@ -1623,6 +1671,23 @@ void Foam::blastFluidSolver::report(Ostream& os) const
     {
         os  << "    ";
         mixture_.eos(i).write(os);
+    }
+    if (burn_.valid())
+    {
+        const scalarField& tau = burn_->burnTime().primitiveField();
+        const scalarField& tb = burn_->lightingTime().primitiveField();
+        label nBurn = 0;
+        scalar t0 = GREAT, t1 = -GREAT;
+        forAll(tau, i)
+        {
+            if (tau[i] > 0)
+            {
+                ++nBurn; t0 = min(t0, tb[i]); t1 = max(t1, tb[i]);
+            }
+        }
+        os  << "    programmed burn: " << returnReduce(nBurn, sumOp<label>())
+            << " cells lit from " << returnReduce(t0, minOp<scalar>())
+            << " s to " << returnReduce(t1, maxOp<scalar>()) << " s" << nl;
     }
     forAll(patchKind_, patchi)
     {

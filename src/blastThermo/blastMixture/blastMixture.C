@@ -9,6 +9,7 @@
 #include "blastMixture.H"
 #include "SubList.H"
 #include "caseChecks.H"
+#include "JWL.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -16,7 +17,8 @@ Foam::blastMixture::blastMixture(const dictionary& dict)
 :
     materials_(dict.get<wordList>("materials")),
     eos_(materials_.size()),
-    alphaMin_(dict.getOrDefault<scalar>("alphaMin", 1e-6))
+    alphaMin_(dict.getOrDefault<scalar>("alphaMin", 1e-6)),
+    unreacted_(nullptr)
 {
     if (materials_.size() < 1 || materials_.size() > 2)
     {
@@ -51,6 +53,11 @@ Foam::blastMixture::blastMixture(const dictionary& dict)
         }
         eos_.set(i, equationOfState::New(name, dict.subDict(name)));
     }
+    const auto* jwl = dynamic_cast<const equationsOfState::JWL*>(&eos_[0]);
+    if (jwl && jwl->hasUnreacted())
+    {
+        unreacted_ = &jwl->unreacted();
+    }
 }
 
 
@@ -64,6 +71,61 @@ void Foam::blastMixture::reserve(const label n) const
         if (twoPhase())
         {
             g2_.setSize(n); f2_.setSize(n); d2_.setSize(n);
+        }
+        if (unreacted_)
+        {
+            gu_.setSize(n); fu_.setSize(n); du_.setSize(n);
+        }
+    }
+}
+
+
+void Foam::blastMixture::material1
+(
+    const label n,
+    const UList<scalar>& rho1,
+    const UList<scalar>* burn
+) const
+{
+    reserve(n);
+    SubList<scalar> g1(g1_, n), f1(f1_, n), d1(d1_, n);
+    const SubList<scalar> r1(rho1, n);
+    eos_[0].Gamma(r1, g1);
+    eos_[0].pRefAndDerivative(r1, f1, d1);
+    if (!burn)
+    {
+        return;
+    }
+    if (!unreacted_)
+    {
+        FatalErrorInFunction
+            << "Material " << materials_[0] << " has no unreacted state but"
+            << " a burn fraction was given" << exit(FatalError);
+    }
+    // Burnt everywhere (after the burn, or outside the charges): the
+    // products' equation of state as it is
+    const UList<scalar>& F = *burn;
+    label first = 0;
+    while (first < n && F[first] >= 1)
+    {
+        ++first;
+    }
+    if (first == n)
+    {
+        return;
+    }
+    SubList<scalar> gu(gu_, n), fu(fu_, n), du(du_, n);
+    unreacted_->Gamma(r1, gu);
+    unreacted_->pRefAndDerivative(r1, fu, du);
+    for (label i = first; i < n; ++i)
+    {
+        const scalar Fi = F[i];
+        if (Fi < 1)
+        {
+            const scalar Fu = 1 - Fi;
+            g1_[i] = Fi*g1_[i] + Fu*gu_[i];
+            f1_[i] = Fi*f1_[i] + Fu*fu_[i];
+            d1_[i] = Fi*d1_[i] + Fu*du_[i];
         }
     }
 }
@@ -80,14 +142,12 @@ void Foam::blastMixture::pc2
     const UList<scalar>& rho,
     const UList<scalar>& rhoe,
     UList<scalar>& p,
-    UList<scalar>& c2
+    UList<scalar>& c2,
+    const UList<scalar>* burn
 ) const
 {
-    reserve(n);
-    SubList<scalar> g1(g1_, n), f1(f1_, n), d1(d1_, n);
-    const SubList<scalar> r1(rho1, n);
-    eos_[0].Gamma(r1, g1);
-    eos_[0].pRefAndDerivative(r1, f1, d1);
+    material1(n, rho1, burn);
+    const SubList<scalar> g1(g1_, n), f1(f1_, n), d1(d1_, n);
 
     if (!twoPhase())
     {
@@ -130,14 +190,12 @@ void Foam::blastMixture::rhoeC2
     const UList<scalar>& rho,
     const UList<scalar>& p,
     UList<scalar>& rhoe,
-    UList<scalar>& c2
+    UList<scalar>& c2,
+    const UList<scalar>* burn
 ) const
 {
-    reserve(n);
-    SubList<scalar> g1(g1_, n), f1(f1_, n), d1(d1_, n);
-    const SubList<scalar> r1(rho1, n);
-    eos_[0].Gamma(r1, g1);
-    eos_[0].pRefAndDerivative(r1, f1, d1);
+    material1(n, rho1, burn);
+    const SubList<scalar> g1(g1_, n), f1(f1_, n), d1(d1_, n);
 
     if (!twoPhase())
     {
@@ -174,17 +232,19 @@ Foam::scalar Foam::blastMixture::rhoe
     const scalar alpha1,
     const scalar rho1,
     const scalar rho2,
-    const scalar p
+    const scalar p,
+    const scalar F
 ) const
 {
-    const equationOfState& e1 = eos_[0];
+    scalar g1, f1;
+    material1(rho1, F, g1, f1);
     if (!twoPhase())
     {
-        return (p - e1.pRef(rho1))/e1.Gamma(rho1);
+        return (p - f1)/g1;
     }
     const equationOfState& e2 = eos_[1];
     return
-        alpha1*(p - e1.pRef(rho1))/e1.Gamma(rho1)
+        alpha1*(p - f1)/g1
       + (1 - alpha1)*(p - e2.pRef(rho2))/e2.Gamma(rho2);
 }
 
@@ -194,18 +254,53 @@ Foam::scalar Foam::blastMixture::p
     const scalar alpha1,
     const scalar rho1,
     const scalar rho2,
-    const scalar rhoe
+    const scalar rhoe,
+    const scalar F
+) const
+{
+    scalar g1, f1;
+    material1(rho1, F, g1, f1);
+    if (!twoPhase())
+    {
+        return g1*rhoe + f1;
+    }
+    const equationOfState& e2 = eos_[1];
+    const scalar xi1 = alpha1/g1;
+    const scalar xi2 = (1 - alpha1)/e2.Gamma(rho2);
+    return (rhoe + xi1*f1 + xi2*e2.pRef(rho2))/(xi1 + xi2);
+}
+
+
+const Foam::equationOfState& Foam::blastMixture::unreacted() const
+{
+    if (!unreacted_)
+    {
+        FatalErrorInFunction
+            << "Material " << materials_[0] << " has no unreacted explosive"
+            << " (it must be a JWL with an explosive preset or an"
+            << " 'unreacted' dictionary)" << exit(FatalError);
+    }
+    return *unreacted_;
+}
+
+
+void Foam::blastMixture::material1
+(
+    const scalar rho1,
+    const scalar F,
+    scalar& g1,
+    scalar& f1
 ) const
 {
     const equationOfState& e1 = eos_[0];
-    if (!twoPhase())
+    g1 = e1.Gamma(rho1);
+    f1 = e1.pRef(rho1);
+    if (F < 1)
     {
-        return e1.Gamma(rho1)*rhoe + e1.pRef(rho1);
+        const equationOfState& u = unreacted();
+        g1 = F*g1 + (1 - F)*u.Gamma(rho1);
+        f1 = F*f1 + (1 - F)*u.pRef(rho1);
     }
-    const equationOfState& e2 = eos_[1];
-    const scalar xi1 = alpha1/e1.Gamma(rho1);
-    const scalar xi2 = (1 - alpha1)/e2.Gamma(rho2);
-    return (rhoe + xi1*e1.pRef(rho1) + xi2*e2.pRef(rho2))/(xi1 + xi2);
 }
 
 

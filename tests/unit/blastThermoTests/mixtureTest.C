@@ -1,6 +1,8 @@
 // Unit tests of the two-material mixture (libblastThermo)
 #include <gtest/gtest.h>
 #include "blastMixture.H"
+#include "JWL.H"
+#include "Murnaghan.H"
 #include "IStringStream.H"
 
 using namespace Foam;
@@ -61,4 +63,160 @@ TEST(Mixture, BadDictionaries)
     EXPECT_THROW(blastMixture(dictOf("materials (a b c);")), Foam::error);
     EXPECT_THROW(blastMixture(dictOf("materials (products);")), Foam::error);
     EXPECT_THROW(blastMixture(dictOf("air { equationOfState idealGas; }")), Foam::error);
+}
+
+
+// Programmed burn: the unreacted explosive (Murnaghan) and the blend of
+// material 1 in blastMixture
+
+namespace
+{
+    const char* burnText =
+        "materials (products air);"
+        "products { equationOfState JWL; explosive TNT; }"
+        "air { equationOfState idealGas; gamma 1.4; }";
+
+    // dp/drho along de = p/rho^2 drho at frozen F (one phase: alpha = 1)
+    scalar c2Frozen
+    (
+        const blastMixture& mix, const scalar rho, const scalar p,
+        const scalar F
+    )
+    {
+        const scalar rhoe = mix.rhoe(1, rho, rho, p, F);
+        const scalar e = rhoe/rho, h = 1e-6*rho;
+        const scalar pp = mix.p(1, rho + h, rho, (e + p/(rho*rho)*h)*(rho + h), F);
+        const scalar pm = mix.p(1, rho - h, rho, (e - p/(rho*rho)*h)*(rho - h), F);
+        return (pp - pm)/(2*h);
+    }
+}
+
+
+TEST(Burn, UnreactedAtRestIsOneAtmosphereWithE0Stored)
+{
+    const blastMixture mix(dictOf(burnText));
+    ASSERT_TRUE(mix.canBurn());
+    const auto& jwl = dynamic_cast<const equationsOfState::JWL&>(mix.eos(0));
+    const equationOfState& u = mix.unreacted();
+    const scalar rho0 = jwl.rho0(), q = jwl.E0()/rho0;
+    // Unreacted at (rho0, E0/rho0): 1 atm; the same energy burnt: p_CV
+    EXPECT_NEAR(u.p(rho0, q), 101325, 1e-6*101325);
+    EXPECT_NEAR(mix.p(1, rho0, rho0, rho0*q, 0), 101325, 1e-6*101325);
+    EXPECT_NEAR(mix.p(1, rho0, rho0, rho0*q, 1), jwl.pCV(), 1e-12*jwl.pCV());
+    // Preset sound speed c0 = 2390 m/s (K0 = rho0 c0^2, plus Gamma p0)
+    EXPECT_NEAR(Foam::sqrt(u.c2(rho0, 101325)), 2390, 0.1);
+    // Murnaghan stiffening: p rises as K0/n ((rho/rho0)^n - 1) at e = q
+    const scalar n = 4*2.05 - 1, K0 = rho0*sqr(2390.0);
+    const scalar rho = 1.1*rho0;
+    EXPECT_NEAR
+    (
+        u.p(rho, q), 101325 + K0/n*(Foam::pow(scalar(1.1), n) - 1), 1e-9*u.p(rho, q)
+    );
+}
+
+
+TEST(Burn, FrozenSoundSpeedAndRoundTripAtEveryBurnFraction)
+{
+    const blastMixture mix(dictOf(burnText));
+    const scalarField F({0, 0.25, 0.5, 0.9, 1});
+    const label n = F.size();
+    scalarField alpha(n, 0.7), r1(n, 1900), r2(n, 5), p(n, 3e9);
+    scalarField rho(alpha*r1 + (1 - alpha)*r2);
+    scalarField rhoe(n), c2(n), p2(n), c22(n);
+    mix.rhoeC2(n, alpha, r1, r2, rho, p, rhoe, c2, &F);
+    mix.pc2(n, alpha, r1, r2, rho, rhoe, p2, c22, &F);
+    forAll(F, i)
+    {
+        EXPECT_NEAR(p2[i], p[i], 1e-9*p[i]);
+        EXPECT_NEAR(c22[i], c2[i], 1e-9*c2[i]);
+        EXPECT_NEAR
+        (
+            mix.p(alpha[i], r1[i], r2[i], rhoe[i], F[i]), p[i], 1e-9*p[i]
+        );
+        // One phase: the blended sound speed is the frozen isentropic one
+        const scalarField a1(1, 1.0), r(1, 1900.0), pp(1, 3e9), Fi(1, F[i]);
+        scalarField e1(1), c1(1);
+        mix.rhoeC2(1, a1, r, r, r, pp, e1, c1, &Fi);
+        EXPECT_NEAR(c1[0], c2Frozen(mix, 1900, 3e9, F[i]), 1e-6*c1[0]);
+        EXPECT_GT(c1[0], 0);
+    }
+    // F = 1 is the products' equation of state, bit for bit
+    scalarField rhoe1(n), c21(n);
+    mix.rhoeC2(n, alpha, r1, r2, rho, p, rhoe1, c21);
+    EXPECT_EQ(rhoe1[n - 1], rhoe[n - 1]);
+    EXPECT_EQ(c21[n - 1], c2[n - 1]);
+}
+
+
+TEST(Burn, BadUnreactedInput)
+{
+    // rho0 and q are the JWL's: not allowed in 'unreacted'
+    EXPECT_THROW
+    (
+        blastMixture(dictOf
+        (
+            "materials (products air);"
+            "products { equationOfState JWL; explosive TNT;"
+            " unreacted { rho0 1000; } }"
+            "air { equationOfState idealGas; }"
+        )),
+        Foam::error
+    );
+    // A misspelt entry of 'unreacted'
+    EXPECT_THROW
+    (
+        blastMixture(dictOf
+        (
+            "materials (products air);"
+            "products { equationOfState JWL; explosive TNT;"
+            " unreacted { K 1e10; } }"
+            "air { equationOfState idealGas; }"
+        )),
+        Foam::error
+    );
+    // A JWL without preset or 'unreacted' cannot burn
+    const blastMixture noBurn(dictOf
+    (
+        "materials (products air);"
+        "products { equationOfState JWL; rho0 1630; A 371.2e9; B 3.231e9;"
+        " R1 4.15; R2 0.95; omega 0.3; E0 7e9; }"
+        "air { equationOfState idealGas; }"
+    ));
+    EXPECT_FALSE(noBurn.canBurn());
+    const scalarField F(1, 0.5), a(1, 1.0), r(1, 1630.0), p(1, 1e9);
+    scalarField e(1), c(1);
+    EXPECT_THROW(noBurn.rhoeC2(1, a, r, r, r, p, e, c, &F), Foam::error);
+    // Without preset, an 'unreacted' dictionary makes it burnable
+    const blastMixture withU(dictOf
+    (
+        "materials (products air);"
+        "products { equationOfState JWL; rho0 1630; A 371.2e9; B 3.231e9;"
+        " R1 4.15; R2 0.95; omega 0.3; E0 7e9;"
+        " unreacted { K0 9.3e9; n 7.2; Gamma 1; } }"
+        "air { equationOfState idealGas; }"
+    ));
+    EXPECT_TRUE(withU.canBurn());
+}
+
+
+TEST(Burn, ChapmanJouguetPointIsSonic)
+{
+    // At the CJ point the flow leaves the front at the sound speed,
+    // c_CJ = D_CJ - u_CJ = D_CJ rho0/rho_CJ, and p_CJ on the Rayleigh line
+    for (const char* ex : {"TNT", "PETN", "CompB", "HMX"})
+    {
+        const std::string text =
+            std::string("equationOfState JWL; explosive ") + ex + ";";
+        IStringStream is(text);
+        const equationsOfState::JWL jwl("products", dictionary(is));
+        scalar D = 0, p = 0, rho = 0;
+        jwl.chapmanJouguet(101325, D, p, rho);
+        const scalar c = Foam::sqrt(jwl.c2(rho, p));
+        EXPECT_NEAR(c, D*jwl.rho0()/rho, 1e-5*D) << ex;
+        const scalar rayleigh =
+            101325 + sqr(jwl.rho0()*D)*(1/jwl.rho0() - 1/rho);
+        EXPECT_NEAR(p, rayleigh, 1e-9*p) << ex;
+        // The LLNL sets are fitted to their CJ states (HMX: D 1.3 % off)
+        EXPECT_NEAR(D, jwl.D(), 0.015*jwl.D()) << ex;
+    }
 }
