@@ -17,28 +17,39 @@ Description
     joint topology and the contact work space included) on '>>' lines.
 
 Usage
-    femdemBenchmark [nx ny steps nxFragmented nyFragmented stepsFragmented]
+    femdemBenchmark [nx ny steps nxFragmented nyFragmented stepsFragmented
+        [cases [skin]]]
+    cases: the letters of the cases to run, i intact, b blocky, f
+    fragmented (default ibf; e.g. f for a profile of the fragmented case);
+    skin: potentialCoeffs.skin (default: the contact law's)
 
 \*---------------------------------------------------------------------------*/
 
 #include "femdemSolid.H"
 #include "contactLaw.H"
+#include "potentialContact.H"
 #include "IStringStream.H"
 #include "Random.H"
 #include <chrono>
 #include <ctime>
 #include <cstdio>
+#include <string>
 
 using namespace Foam;
 
 namespace
 {
 
+//- Verlet skin of the potential contact (negative: its default)
+scalar skin = -1;
+
 dictionary props(const word& contact)
 {
+    const std::string coeffs = skin < 0 ? "" :
+        "potentialCoeffs { skin " + std::to_string(skin) + "; }";
     IStringStream is
     (
-        "cohesiveLaw munjiza; contactLaw " + contact + ";"
+        coeffs + "cohesiveLaw munjiza; contactLaw " + contact + ";"
         "materials { rock { E 19.5e9; nu 0.265; rho 2000;"
         " tensileStrength 3.5e6; cohesion 17.6e6; frictionAngle 23;"
         " GI 100; GII 1750; dampingRatio 0.1; } }"
@@ -66,6 +77,9 @@ void run
 )
 {
     solid.step();   // warm-up (allocates the contact work space)
+    const auto* pc =
+        dynamic_cast<const contactLaws::potential*>(&solid.contact());
+    const label builds0 = pc ? pc->nListBuilds() : 0;
     // CPU time of the process (one thread): the machine may be shared
     const std::clock_t c0 = std::clock();
     const auto t0 = std::chrono::steady_clock::now();
@@ -85,6 +99,15 @@ void run
         long(solid.contact().nCandidatePairs()),
         long(solid.contact().nActivePairs())
     );
+    if (pc)
+    {
+        std::printf
+        (
+            ">> %s: %ld candidate-list builds in %ld steps, %ld listed pairs\n",
+            name.c_str(), long(pc->nListBuilds() - builds0), long(steps),
+            long(pc->nListedPairs())
+        );
+    }
 }
 
 } // End anonymous namespace
@@ -98,8 +121,15 @@ int main(int argc, char *argv[])
     const label fx = argc > 4 ? atoi(argv[4]) : 100;
     const label fy = argc > 5 ? atoi(argv[5]) : 100;
     const label fsteps = argc > 6 ? atoi(argv[6]) : 200;
+    const std::string cases = argc > 7 ? argv[7] : "ibf";
+    if (argc > 8) skin = atof(argv[8]);
+    auto runs = [&cases](const char c)
+    {
+        return cases.find(c) != std::string::npos;
+    };
 
     // Intact: 0.5 x 0.4 m, compressed from the top
+    if (runs('i'))
     {
         const triangleMesh mesh = triangleMesh::rectangle
         (
@@ -113,6 +143,7 @@ int main(int argc, char *argv[])
 
     // Blocky: joints on every 4th grid line broken (fragments of 4 x 4
     // cells = 32 triangles), random block velocities, pressed
+    if (runs('b'))
     {
         const triangleMesh mesh = triangleMesh::rectangle
         (
@@ -160,6 +191,7 @@ int main(int argc, char *argv[])
     }
 
     // Fragmented: all joints broken, random velocities, pressed
+    if (runs('f'))
     {
         const triangleMesh mesh = triangleMesh::rectangle
         (

@@ -53,6 +53,7 @@ void Foam::femdemSolid::setMaterials
             femdemMaterial(names[m], mdict.subDict(names[m]), defaultLaw);
     }
     triangleMaterial_ = mesh.triangleMaterials();
+    materialTable_.set(materials_);
 }
 
 
@@ -175,6 +176,7 @@ void Foam::femdemSolid::markFreeEdges()
         }
         freeEdges_[t] = m;
     }
+    ++freeEdgeChanges_;
 }
 
 
@@ -194,6 +196,7 @@ Foam::femdemSolid::femdemSolid
     topo_(mesh),
     patchNames_(mesh.patchNames()),
     singleLaw_(-1),
+    freeEdgeChanges_(0),
     nBroken_(0),
     gravity_(dict.getOrDefault<vector2D>("gravity", vector2D::zero)),
     massDamping_(dict.getOrDefault<scalar>("massDamping", 0)),
@@ -305,6 +308,7 @@ void Foam::femdemSolid::setBroken(const label j)
         broken_[j] = true;
         damage_[j] = 1;
         ++nBroken_;
+        ++freeEdgeChanges_;
         // Only the two faces of j become free
         freeEdges_[topo_.jointTriangleA()[j]] |= (1u << topo_.jointEdgeA()[j]);
         freeEdges_[topo_.jointTriangleB()[j]] |= (1u << topo_.jointEdgeB()[j]);
@@ -341,12 +345,18 @@ void Foam::femdemSolid::step(const scalar dt)
         vOld_ = v_;
     }
 
-    // Velocity update: gravity and mass-proportional damping added here
+    // Velocity update: gravity and mass-proportional damping added here;
+    // in the same pass the position update of the nodes that no condition
+    // constrains (the others' after the constraints)
     const vector2D g = gravity_;
     const scalar alpha = massDamping_;
     vector2D* v = v_.data();
+    vector2D* x = x_.data();
     const vector2D* f = f_.cdata();
     const scalar* im = invMass_.cdata();
+    const label* cn = constrainedNodes_.cdata();
+    const label nc = constrainedNodes_.size();
+    label c = 0;
     scalar maxSpeedSqr = 0;
     for (label i = 0; i < n; ++i)
     {
@@ -354,6 +364,12 @@ void Foam::femdemSolid::step(const scalar dt)
         const scalar s2 = magSqr(v[i]);
         // written so that a NaN is taken as the largest
         maxSpeedSqr = s2 <= maxSpeedSqr ? maxSpeedSqr : s2;
+        if (c < nc && cn[c] == i)
+        {
+            ++c;
+            continue;
+        }
+        x[i] += dt*v[i];
     }
     maxSpeedSqr_ = maxSpeedSqr;
 
@@ -384,8 +400,7 @@ void Foam::femdemSolid::step(const scalar dt)
         wExt_ += wl; wGravity_ += wg;
     }
 
-    vector2D* x = x_.data();
-    for (label i = 0; i < n; ++i)
+    for (const label i : constrainedNodes_)
     {
         x[i] += dt*v[i];
     }

@@ -127,6 +127,10 @@ void Foam::femdemSolid::setBoundaryConditions(const dictionary& dict)
             bc.nodes.transfer(nodeList);
         }
     }
+
+    labelHashSet constrained;
+    for (const boundaryCondition& bc : bcs_) constrained.insert(bc.nodes);
+    constrainedNodes_ = constrained.sortedToc();
 }
 
 

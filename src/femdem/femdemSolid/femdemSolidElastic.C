@@ -26,30 +26,6 @@ namespace
 {
 using namespace Foam;
 
-//- Per-material constants of the triangle loops, indexed by material
-struct materialTable
-{
-    elasticConstants c[16];
-    scalar etaC[16];        //- damping: eta = etaC sqrt(2 A0)
-    scalar xi2M[16];        //- xi^2 M: effective damping ratio, see below
-
-    explicit materialTable(const UList<femdemMaterial>& mats)
-    {
-        if (mats.size() > 16)
-        {
-            FatalErrorInFunction << "more than 16 materials" << exit(FatalError);
-        }
-        forAll(mats, m)
-        {
-            const femdemMaterial& mat = mats[m];
-            c[m] = mat.elastic;
-            etaC[m] = mat.dampingRatio*2*std::sqrt(mat.rho*mat.Mp);
-            xi2M[m] = sqr(mat.dampingRatio)*mat.Mp;
-        }
-    }
-};
-
-
 //- Deformation gradient F = Ds Dm^-1 of the triangle with nodes n0..n0+2
 inline elasticLaws::kinematics kinematicsOf
 (
@@ -196,7 +172,7 @@ struct triangleKernel
     const label* matOf;
     const scalar* stepScale;
     const scalar* springs;
-    const materialTable& mats;
+    const femdemSolid::materialTable& mats;
     vector2D* pe;
     vector2D* pv;
     stepAccount step;
@@ -267,6 +243,22 @@ struct energyKernel
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+void Foam::femdemSolid::materialTable::set(const UList<femdemMaterial>& mats)
+{
+    if (mats.size() > 16)
+    {
+        FatalErrorInFunction << "more than 16 materials" << exit(FatalError);
+    }
+    forAll(mats, m)
+    {
+        const femdemMaterial& mat = mats[m];
+        c[m] = mat.elastic;
+        etaC[m] = mat.dampingRatio*2*std::sqrt(mat.rho*mat.Mp);
+        xi2M[m] = sqr(mat.dampingRatio)*mat.Mp;
+    }
+}
+
+
 template<class Kernel>
 void Foam::femdemSolid::forEachLawGroup(Kernel& kernel) const
 {
@@ -320,7 +312,7 @@ Foam::femdemSolid::stableStep Foam::femdemSolid::addTriangleForces
     UList<vector2D>& fv
 ) const
 {
-    const materialTable mats(materials_);
+    const materialTable& mats = materialTable_;
     triangleKernel<true> kernel
     {
         x_.cdata(), v_.cdata(), DmInv_.cdata(), area0_.cdata(),
@@ -419,7 +411,7 @@ void Foam::femdemSolid::setStableTimeStep(const stableStep& s)
 
 void Foam::femdemSolid::updateStableTimeStep()
 {
-    const materialTable mats(materials_);
+    const materialTable& mats = materialTable_;
     triangleKernel<false> kernel
     {
         x_.cdata(), v_.cdata(), DmInv_.cdata(), area0_.cdata(),

@@ -215,7 +215,7 @@ std::size_t Foam::femdemSolid::memoryBytes() const
       + bytes(jointClass_) + bytes(jointLength0_) + bytes(damage_)
       + bytes(broken_) + bytes(jointStrength_)
       + bytes(fTri_) + bytes(fDamp_) + bytes(fJoint_) + bytes(fContact_)
-      + bytes(fLoad_) + bytes(vOld_);
+      + bytes(fLoad_) + bytes(vOld_) + bytes(constrainedNodes_);
     for (const boundaryCondition& bc : bcs_)
     {
         b += bytes(bc.nodes) + bytes(bc.faces);
