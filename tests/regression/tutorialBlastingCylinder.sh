@@ -1,9 +1,14 @@
 #!/bin/bash
-# Regression: tutorials/jwlIbFoam/blastingCylinder (copper cylinder test with TNT, quick mode): terminal wall velocity against Gurney, wall position from two measures; figures from its summary.json
-set -e
+# Regression: tutorials/jwlIbFoam/blastingCylinder (copper cylinder test, quick mode, cut-cell coupling) with TNT and with Composition B: terminal wall velocity against each explosive's Gurney velocity (5 %), wall position from two measures, gas + solid energy; figures from its summary.json
+set -e -o pipefail
 cd "$JWLIBFOAM_TEST_DIR"
-cp -r "$JWLIBFOAM_TUTORIALS/jwlIbFoam/blastingCylinder" .
-cd blastingCylinder
-./Allclean > /dev/null 2>&1 || true
-./Allrun -quick
-"$JWLIBFOAM_PROJECT/tests/bin/checkSummary" summary.json
+for explosive in TNT CompB
+do
+    rm -rf $explosive && cp -r "$JWLIBFOAM_TUTORIALS/jwlIbFoam/blastingCylinder" $explosive
+    (
+        cd $explosive
+        ./Allclean > /dev/null 2>&1 || true
+        ./Allrun -quick -explosive $explosive | sed "s/^/$explosive: /"
+        "$JWLIBFOAM_PROJECT/tests/bin/checkSummary" summary.json | sed "s/^>> />> $explosive: /"
+    )
+done

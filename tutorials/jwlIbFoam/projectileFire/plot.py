@@ -145,17 +145,18 @@ def leak_figure(label, case, xFront0):
                      "(relative)", m1 / m0 - 1, 0.0, 1e-3)
 
 
-def energy_figure(label, case):
+def energy_figure(label, case, tolerance):
     """Gas + solid energy (kinetic, elastic, joints, fracture, damping,
     contact) of the closed barrel: the walls do no work, so it is
-    conserved; the first row is one step after the start. The tolerance
-    is loose: the cut cell behind the moving projectile is over-filled
-    (README.md), which creates 1.6 to 2.4 % here at present."""
+    conserved; the first row is one step after the start. The cut-cell
+    coupling conserves it to round-off for rigid motion (the ideal-gas gun:
+    1e-8) and to the sub-cycling error of the ringing projectile otherwise
+    (the TNT gun: 1e-4); the first generation gained 1.6 - 2.4 % and 12 %."""
     b = bp.budget_table(os.path.join(case, "postProcessing", "jwlIbFoam", "0",
                                      "budget.dat"))
     e = b["gasEnergy"] + bp.solid_energy(b)
     return bp.figure(f"{label}: gas + solid energy change (relative)",
-                     e[-1] / e[0] - 1, 0.0, 0.03)
+                     e[-1] / e[0] - 1, 0.0, tolerance)
 
 
 def wall_pressure(case):
@@ -193,13 +194,13 @@ def ideal_gas(figures):
         bp.figure("idealGas: window end (reflected wave at the projectile) [s]",
                   tw),
         bp.figure("idealGas: muzzle velocity at the window end [m/s]",
-                  vEnd, vEndExact, 0.03, relative=True),
+                  vEnd, vEndExact, 0.01, relative=True),
         bp.figure("idealGas: max |v - v_exact| over the window / v_exact(end)",
-                  errMax, 0.0, 0.03),
+                  errMax, 0.0, 0.01),
         bp.figure("idealGas: travel at the window end [m]",
-                  xEnd, xEndExact, 0.03, relative=True),
+                  xEnd, xEndExact, 0.01, relative=True),
         momentum_figure("idealGas", case, t, dt, mom),
-        energy_figure("idealGas", case),
+        energy_figure("idealGas", case, 1e-8),
         leak_figure("idealGas", case, L_air + Lp),
         bp.figure("idealGas: gas mass change (relative)",
                   abs(mass[-1] / mass[0] - 1), 0.0, 1e-10),
@@ -241,7 +242,7 @@ def tnt(figures):
         bp.figure("tnt: breech pressure at muzzle exit [Pa]",
                   np.interp(tMuzzle, tp, pB)),
         momentum_figure("tnt", case, t, dt, mom),
-        energy_figure("tnt", case),
+        energy_figure("tnt", case, 1e-4),
         leak_figure("tnt", case, L_tnt + Lp),
         bp.figure("tnt: gas mass change (relative)",
                   abs(mass[-1] / mass[0] - 1), 0.0, 1e-10),
