@@ -7,10 +7,11 @@
 #    projectile's faces inside cells (0.325 of a cell past a face line),
 #    pre-stressed to the gas pressure; the barrel ends periodic (quick mesh,
 #    4 mm x 10 mm cells) or inflow (the uniform state) / transmissive
-#    outflow (full mesh, 2 mm x 5 mm cells): the exact answer is the uniform
-#    translation. 200 steps: max |p/p0 - 1| < 1e-6; periodic: gas + solid
-#    energy, axial momentum and mass to round-off (the walls take the
-#    transverse momentum);
+#    outflow (full mesh, 2 mm x 5 mm cells), p0 1e5, 1e6 and 20 MPa (the
+#    tutorial's chamber), projectile triangles of 4 mm: the exact answer is
+#    the uniform translation. 200 steps: max |p/p0 - 1| < 1e-6; periodic:
+#    gas + solid energy, axial momentum and mass to round-off (the walls
+#    take the transverse momentum);
 #  - 2D piston at 30 degrees to the mesh: a heavy, stiff rectangle 0.3 m
 #    long, its faces at 30 degrees to the cell faces, moving along its normal
 #    at constant speed into gas at rest on one side and away from it on the
@@ -77,7 +78,7 @@ barrel()
         bEnd="{ type fixedValue; value uniform VALUE; }"; mEnd="{ type zeroGradient; }"
         bU="{ type fixedValue; value uniform (100 0 0); }"; mU=$mEnd
     fi
-    sed -i "s/^targetSize .*/targetSize  $h;/; s/min (0.8 0); max (0.82 0.01)/min ($x0 0); max ($(py "$x0 + 0.02") 0.01)/" \
+    sed -i "s/^targetSize .*/targetSize  0.004;/; s/min (0.8 0); max (0.82 0.01)/min ($x0 0); max ($(py "$x0 + 0.02") 0.01)/" \
         $c/system/femdemMeshDict
     sed -i "s/dampingRatio .*/dampingRatio 0.5; initialStress (-$p0 0 -$p0);/" $c/constant/femdemProperties
     echo "initialVelocity (100 0);" >> $c/constant/femdemProperties
@@ -114,6 +115,12 @@ PY
 }
 barrel barrelPeriodic periodic 1e5 1.2 500 1 3e-6
 barrel barrelInflow inflowOutflow 1e6 12 1000 2 1.5e-6
+# The tutorial's chamber state (20 MPa, 160 kg/m3). Open (issue 13): the
+# translating projectile rings (0.16 J/m damped) and the gas sees it,
+# 4.4e-6; at rest the state stays uniform to 4e-15, and femdemFoam alone,
+# translating with 20 MPa pressure conditions on the same faces, does not
+# ring: the nodal forces of the coupling in translation
+barrel barrelChamber periodic 20e6 160 500 1 3e-6
 
 # 2D piston at 30 degrees: name, material line, rho, p, speed, end time,
 # plateau length
@@ -145,7 +152,9 @@ pts = [(0.2 + i * 0.025 * n[0] + j * 0.15 * t[0], 0.2 + i * 0.025 * n[1] + j * 0
 print(" ".join(f"({x:.17g} {y:.17g})" for x, y in pts), f"{n[0]:.17g} {n[1]:.17g}")
 PY
 )
-    sed -i "s|piston { type rectangle.*|piston { type polygon; points (${g[*]:0:8}); material steel; }|" \
+    # (triangles of 12.5 mm: the piston does not deform, and the projection
+    # costs per triangle)
+    sed -i "s|piston { type rectangle.*|piston { type polygon; points (${g[*]:0:8}); material steel; }|; s/^targetSize .*/targetSize 0.0125;/" \
         $c/system/femdemMeshDict
     for f in p rho U; do
         sed -i 's/^boundaryField.*/boundaryField { walls { type zeroGradient; } frontAndBack { type empty; } }/' $c/0/$f
