@@ -127,13 +127,9 @@ def fragments(case, block):
 
 
 def written_times(case):
-    out = []
-    for d in os.listdir(case):
-        try:
-            out.append((float(d), d))
-        except ValueError:
-            pass
-    return sorted(out)
+    """(time, directory name) of the time directories, in time order"""
+    names = [d for d in os.listdir(case) if re.fullmatch(r"[0-9.eE+-]+", d)]
+    return sorted((float(d), d) for d in names)
 
 
 def firing(case, centres, t0, tSpread):
