@@ -55,7 +55,7 @@ for angle in 0 30; do
     sed -i "s/^internalField.*/internalField uniform ($ux $uy 0);/" $c/0/U
     sed -i 's/^endTime .*/endTime 2e-4;/; s/^deltaT .*/deltaT 1e-6;/; s/^writeInterval .*/writeInterval 200;/' \
         $c/system/controlDict
-    (cd $c && jwlIbFoam > log.jwlIbFoam 2>&1) || { tail -5 $c/log.jwlIbFoam; echo ">> $c run failed <-- FAIL"; exit 1; }
+    (cd $c && jwlIbFoam > log.jwlIbFoam 2>&1) || { tail -n 5 $c/log.jwlIbFoam; echo ">> $c run failed <-- FAIL"; exit 1; }
     read dp dE dP dm < <(cd $c && /usr/bin/python3 - <<'PY'
 import numpy as np, budget
 from budget import internal
@@ -96,7 +96,7 @@ DICT
     (cd $c && blockMesh > log.blockMesh 2>&1 && femdemMesh > log.femdemMesh 2>&1 \
         && jwlIbFoam > log.jwlIbFoam 2>&1 && riemann $u -$u log.compression \
         && riemann -$u $u log.expansion) \
-        || { tail -5 $c/log.*; echo ">> $c failed <-- FAIL"; fail=1; return; }
+        || { tail -n 5 $c/log.*; echo ">> $c failed <-- FAIL"; fail=1; return; }
     local pc pe
     pc=$(sed -n 's/.*p\* = \(\S*\).*/\1/p' $c/log.compression)
     pe=$(sed -n 's/.*p\* = \(\S*\).*/\1/p' $c/log.expansion)

@@ -83,4 +83,20 @@ else
         echo ">> restart from the last good time $last failed  <-- FAIL"; tail -5 log.restart; fail=1
     fi
 fi
+
+# 5. a field whose dimensions are not the SI ones the solver assumes (a
+#    pressure written in bar as [1 -1 -2 0 0 0 0] * 1e5 cannot be told from
+#    Pa by its values; a velocity with pressure dimensions can): a
+#    FatalError naming the file and the entry 'dimensions'
+cd "$JWLIBFOAM_TEST_DIR" || exit 1
+rm -rf badDims && mkdir badDims && cp -r base/0 base/constant base/system badDims/
+sed -i 's/^dimensions .*/dimensions [1 -1 -2 0 0 0 0];/' badDims/0/U
+if jwlIbFoam -case badDims > badDims.log 2>&1; then
+    echo ">> U with pressure dimensions: accepted  <-- FAIL"; fail=1
+elif grep -q "badDims/0/U" badDims.log && grep -q "entry 'dimensions'" badDims.log \
+    && ! grep -q "Signal\|sigFpe" badDims.log; then
+    echo ">> U with pressure dimensions: rejected, naming the file and 'dimensions'"
+else
+    echo ">> U with pressure dimensions: message lacks file/entry  <-- FAIL"; tail -8 badDims.log; fail=1
+fi
 exit $fail

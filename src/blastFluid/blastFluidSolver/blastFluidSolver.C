@@ -24,6 +24,27 @@ namespace Foam
 
 namespace
 {
+    //- A field read from its file carries the dimensions the solver
+    //  assumes: the solver works on the values, and a pressure given in
+    //  bar or a density in g/cm3 (dimensions written for them) would
+    //  otherwise be taken as Pa and kg/m3 without a word
+    template<class FieldType>
+    void checkDimensions
+    (
+        FieldType& field,
+        const Foam::dimensionSet& expected
+    )
+    {
+        if (field.headerOk() && field.dimensions() != expected)
+        {
+            FatalErrorInFunction
+                << "file " << field.objectPath() << ": entry 'dimensions' is "
+                << field.dimensions() << " but " << field.name()
+                << " must have the dimensions " << expected << " (SI units)"
+                << Foam::exit(Foam::FatalError);
+        }
+    }
+
     Foam::IOobject readIO
     (
         const Foam::word& name,
@@ -1423,6 +1444,19 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
         }
         burn_.reset(new programmedBurn(mesh));
         updateBurn(mesh.time().value());
+    }
+
+    checkDimensions(p_, dimPressure);
+    checkDimensions(U_, dimVelocity);
+    checkDimensions(rho_, dimDensity);
+    checkDimensions(rhoU_, dimDensity*dimVelocity);
+    checkDimensions(rhoE_, dimEnergy/dimVolume);
+    if (twoPhase_)
+    {
+        checkDimensions(alpha1Ptr_(), dimless);
+        checkDimensions(rho1Ptr_(), dimDensity);
+        checkDimensions(rho2Ptr_(), dimDensity);
+        checkDimensions(alphaRho1Ptr_(), dimDensity);
     }
 
     if (restart)
