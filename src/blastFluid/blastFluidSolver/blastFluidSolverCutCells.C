@@ -959,8 +959,9 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
     // A cell takes at most half of its internal energy either way: the
     // difference can exceed the content of a cell that opened in the step
     // (a crack that opened faster than predicted). The rest is spread over
-    // all gas in proportion to its internal energy (spreadEnergy, a small
-    // relative change everywhere instead of a negative energy in one cell)
+    // all burnt gas in proportion to its internal energy (spreadEnergy, a
+    // small relative change everywhere instead of a negative energy in one
+    // cell)
     volScalarField& phiField = fluidFractionPtr_();
     const scalarField& phi = phiField.primitiveField();
     const scalarField& V = mesh_.V();
@@ -982,10 +983,20 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
         cRhoE[i] += d;
         rest += dE[i] - d*V[i];
     }
+    // Unburnt explosive (programmed burn) does not share: its internal
+    // energy is mostly chemical (q = E0/rho0), and a share of it would
+    // change the pressure of a charge that has not fired (5e-4 before t0)
+    const scalarField* F =
+        burn_.valid() ? &burn_->burnFraction().primitiveField() : nullptr;
+    auto weight = [&](const label i)
+    {
+        const scalar e = max(internal(i), scalar(0));
+        return F ? e*(*F)[i] : e;
+    };
     scalar total = 0;
     forAll(phi, i)
     {
-        total += max(internal(i), scalar(0))*V[i];
+        total += weight(i)*V[i];
     }
     reduce(rest, sumOp<scalar>());
     reduce(total, sumOp<scalar>());
@@ -994,7 +1005,7 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
         const scalar r = rest/total;
         forAll(phi, i)
         {
-            cRhoE[i] += r*max(internal(i), scalar(0));
+            cRhoE[i] += r*weight(i);
         }
         spreadEnergy_ += rest;
     }
