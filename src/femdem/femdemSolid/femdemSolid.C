@@ -328,6 +328,7 @@ void Foam::femdemSolid::step(const scalar dt)
         setStableTimeStep(addTriangleForces(f_, f_));
         jointsBroken(cohesive_->addForces(*this, f_));
         contact_->addForces(*this, f_, dt);
+        addSymmetryPlaneContact(f_);
     }
     else
     {
@@ -337,6 +338,7 @@ void Foam::femdemSolid::step(const scalar dt)
         setStableTimeStep(addTriangleForces(fTri_, fDamp_));
         jointsBroken(cohesive_->addForces(*this, fJoint_));
         contact_->addForces(*this, fContact_, dt);
+        addSymmetryPlaneContact(fContact_);
         for (label i = 0; i < n; ++i)
         {
             f_[i] = fTri_[i] + fDamp_[i] + fJoint_[i] + fContact_[i]

@@ -86,11 +86,15 @@ void Foam::femdemSolid::setBoundaryConditions(const dictionary& dict)
             bc.type = boundaryCondition::PRESSURE;
             bc.pressure = d.get<scalar>("value");
         }
+        else if (type == "symmetryPlane")
+        {
+            bc.type = boundaryCondition::SYMMETRYPLANE;
+        }
         else
         {
             FatalIOErrorInFunction(d)
                 << "entry 'type': unknown boundary condition '" << type
-                << "' (fixed, velocity, traction, pressure)"
+                << "' (fixed, velocity, traction, pressure, symmetryPlane)"
                 << exit(FatalIOError);
         }
 
@@ -122,9 +126,14 @@ void Foam::femdemSolid::setBoundaryConditions(const dictionary& dict)
         (
             bc.type == boundaryCondition::FIXED
          || bc.type == boundaryCondition::VELOCITY
+         || bc.type == boundaryCondition::SYMMETRYPLANE
         )
         {
             bc.nodes.transfer(nodeList);
+        }
+        if (bc.type == boundaryCondition::SYMMETRYPLANE)
+        {
+            setSymmetryPlane(bc, d);
         }
     }
 
@@ -184,12 +193,36 @@ void Foam::femdemSolid::addLoads(UList<vector2D>& f) const
 }
 
 
+void Foam::femdemSolid::stateBeforeConstraint
+(
+    const label n,
+    const scalar dt,
+    vector2D& vOld,
+    vector2D& F
+) const
+{
+    // Velocity before the update (the unconstrained update inverted when
+    // the old velocities are not kept) and the total force on the node
+    const scalar alpha = massDamping_;
+    const scalar m = 1/invMass_[n];
+    vOld =
+        trackEnergy_
+      ? vOld_[n]
+      : (v_[n] - dt*(invMass_[n]*f_[n] + gravity_))/(1 - alpha*dt);
+    F = f_[n] + m*gravity_ - alpha*m*vOld;
+}
+
+
 void Foam::femdemSolid::applyConstraints(const scalar dt, const scalar tNew)
 {
-    const scalar alpha = massDamping_;
     forAll(bcs_, b)
     {
         boundaryCondition& bc = bcs_[b];
+        if (bc.type == boundaryCondition::SYMMETRYPLANE)
+        {
+            applySymmetryPlane(b, dt);
+            continue;
+        }
         if
         (
             bc.type != boundaryCondition::FIXED
@@ -204,13 +237,8 @@ void Foam::femdemSolid::applyConstraints(const scalar dt, const scalar tNew)
         for (const label n : bc.nodes)
         {
             const scalar m = 1/invMass_[n];
-            const vector2D vUnc = v_[n];
-            // Velocity before the update (unconstrained update inverted)
-            const vector2D vOld =
-                trackEnergy_
-              ? vOld_[n]
-              : (vUnc - dt*(invMass_[n]*f_[n] + gravity_))/(1 - alpha*dt);
-            const vector2D F = f_[n] + m*gravity_ - alpha*m*vOld;
+            vector2D vOld, F;
+            stateBeforeConstraint(n, dt, vOld, F);
             for (direction c = 0; c < 2; ++c)
             {
                 if (!(bc.mask & (1 << c))) continue;
@@ -222,6 +250,99 @@ void Foam::femdemSolid::applyConstraints(const scalar dt, const scalar tNew)
         }
         bcReaction_[b] = R;
         wExt_ += work;
+    }
+}
+
+
+void Foam::femdemSolid::setSymmetryPlane
+(
+    boundaryCondition& bc,
+    const dictionary& dict
+) const
+{
+    // Normal from the faces (the solid lies to the left of each boundary
+    // edge: inward normal (-e_y, e_x)); every vertex must lie on the plane
+    vector2D sumN(Zero);
+    scalar length = 0;
+    for (const label fi : bc.faces)
+    {
+        const label t = topo_.boundaryTriangle()[fi];
+        const label k = topo_.boundaryEdge()[fi];
+        const vector2D e = x_[3*t + (k + 1) % 3] - x_[3*t + k];
+        sumN += vector2D(-e.y(), e.x());
+        length += mag(e);
+    }
+    const scalar magN = mag(sumN);
+    if (bc.faces.empty() || !(magN > 0.999*length))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'type symmetryPlane' of patch '" << bc.patchName
+            << "': the patch is "
+            << (bc.faces.empty() ? "empty" : "not one straight line")
+            << " (a symmetry plane must be straight)" << exit(FatalIOError);
+    }
+    bc.normal = sumN/magN;
+    bc.origin = x_[bc.nodes[0]];
+    for (const label n : bc.nodes)
+    {
+        const scalar dist = mag((x_[n] - bc.origin) & bc.normal);
+        if (dist > 1e-6*length)
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'type symmetryPlane' of patch '" << bc.patchName
+                << "': vertex " << x_[n] << " lies " << dist
+                << " m off the plane through " << bc.origin << " with normal "
+                << bc.normal << " (a symmetry plane must be straight)"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::femdemSolid::applySymmetryPlane(const label b, const scalar dt)
+{
+    // Roller in the plane's normal direction n: v.n = 0 after the update;
+    // reaction and its work as for a velocity condition on that component
+    const boundaryCondition& bc = bcs_[b];
+    const vector2D& nrm = bc.normal;
+    scalar Rn = 0, work = 0;
+    for (const label n : bc.nodes)
+    {
+        const scalar m = 1/invMass_[n];
+        vector2D vOld, F;
+        stateBeforeConstraint(n, dt, vOld, F);
+        const scalar Fn = F & nrm;
+        const scalar vOldN = vOld & nrm;
+        v_[n] -= (v_[n] & nrm)*nrm;
+        const scalar R = -m*vOldN/dt - Fn;
+        Rn += R;
+        work += R*0.5*dt*vOldN;
+    }
+    bcReaction_[b] = Rn*nrm;
+    wExt_ += work;
+}
+
+
+void Foam::femdemSolid::addSymmetryPlaneContact(UList<vector2D>& f) const
+{
+    // Every node behind a plane (the nodes on it are held there) is pushed
+    // back by its contact spring: the mirror image's contact, frictionless
+    const label n = x_.size();
+    const vector2D* x = x_.cdata();
+    const scalar* k = nodeContactSpring_.cdata();
+    for (const boundaryCondition& bc : bcs_)
+    {
+        if (bc.type != boundaryCondition::SYMMETRYPLANE) continue;
+        const vector2D nrm = bc.normal;
+        const scalar d0 = bc.origin & nrm;
+        for (label i = 0; i < n; ++i)
+        {
+            const scalar d = d0 - (x[i] & nrm);
+            if (d > 0)
+            {
+                f[i] += (k[i]*d)*nrm;
+            }
+        }
     }
 }
 

@@ -332,6 +332,7 @@ void Foam::femdemSolid::setStableStepConstants()
     // frequency squared) and the joint and contact springs acting on its
     // nodes (in parallel with the element; the largest of its 3 nodes)
     scalarList omega2(x_.size(), scalar(0));
+    nodeContactSpring_.setSize(x_.size());
     stepScale_.setSize(area0_.size());
     forAll(area0_, t)
     {
@@ -348,6 +349,7 @@ void Foam::femdemSolid::setStableStepConstants()
         for (label k = 0; k < 3; ++k)
         {
             omega2[3*t + k] += 2*kc*invMass_[3*t + k];
+            nodeContactSpring_[3*t + k] = kc;
         }
     }
     forAll(jointClass_, j)
