@@ -39,7 +39,14 @@ Description
     Conservative to round-off, exact for uniform states, and a convex
     combination (positive density and internal energy if the neighbourhood
     content is). A cell that vanishes in the step (phi1 = 0) is a small
-    cell without volume: its content goes to its neighbourhood. The same
+    cell without volume: its content goes to its neighbourhood; if that
+    has no volume either (a pocket crushed among closed cells), to the
+    nearest cells with gas, up to 4 rings of face neighbours away, by gas
+    volume (conservative; lost and reported only beyond that or behind a
+    processor face). A pass works on the small cells, the cells across
+    their faces and the cells on coupled faces only (every other cell is
+    its own neighbourhood and keeps its content): its cost is that of the
+    cut cells, not of the mesh. The same
     merging handles cells that open or close between steps
     (setFluidFraction). Every quantity across a processor face is computed
     from values exchanged through the coupled patches: a decomposed run
@@ -196,7 +203,8 @@ bool Foam::blastFluidSolver::markDeficientNeighbourhoods
     w.deficient.correctBoundaryConditions();
     scalarField deficientNbr;
     coupledNeighbourValues(w.deficient, deficientNbr);
-    for (label f = 0; f < nInternal_; ++f)
+    // (a deficient cell is small: its faces are active)
+    for (const label f : w.activeFaces)
     {
         const label P = own_[f], N = nei_[f];
         if (deficient[P] > 0 && srdLink(f, small[P], phi[N])) w.extra[N] = true;
@@ -229,17 +237,20 @@ void Foam::blastFluidSolver::redistributePass
     // Small cells: less than half open or closing with gas in them, and
     // the cells in 'force' (new ones); with forcedOnly those only
     scalarField& small = w.small.primitiveFieldRef();
+    // (a cell without volume that holds content is always small: its
+    // content must go somewhere)
     forAll(small, i)
     {
         const bool forced = force && (*force)[i];
         const bool candidate = forced || (!forcedOnly && phi[i] < 0.5);
+        const bool content = cRho[i] != 0 || cRhoE[i] != 0;
         small[i] =
-            candidate && (phi[i] > 0 || cRho[i] != 0 || cRhoE[i] != 0)
-          ? 1 : 0;
+            (candidate && phi[i] > 0) || (phi[i] <= 0 && content) ? 1 : 0;
     }
     w.small.correctBoundaryConditions();
     coupledNeighbourValues(w.small, w.smallNbr);
     coupledNeighbourValues(phiField, w.phiNbr);
+    w.setActive(mesh_, small);
 
     countNeighbourhoods(phi);
     if (!returnReduce(max(small) > 0, orOp<bool>()))
@@ -268,7 +279,7 @@ void Foam::blastFluidSolver::redistributePass
     const scalarField& count = w.count.primitiveField();
     scalarField& vol = w.volume.primitiveFieldRef();
     UPtrList<scalarField> share(w.shareValues(nComp));
-    forAll(vol, i)
+    for (const label i : w.activeCells)
     {
         const scalar s = V[i]/count[i];
         vol[i] = phi[i]*s;
@@ -285,7 +296,7 @@ void Foam::blastFluidSolver::redistributePass
     // A cell's state: the mean of the states of its neighbourhoods
     w.evaluateShares(nComp);
     gatherNeighbourhoods(phi, nComp, true);
-    forAll(phi, i)
+    for (const label i : w.activeCells)
     {
         const scalar s = phi[i]/count[i];
         for (label k = 0; k < nComp; ++k)
@@ -293,6 +304,73 @@ void Foam::blastFluidSolver::redistributePass
             component(k, i) = s*w.sum[k][i];
         }
     }
+    depositOrphans(phi, nComp, component);
+}
+
+
+template<class Component>
+void Foam::blastFluidSolver::depositOrphans
+(
+    const scalarField& phi,
+    const label nComp,
+    const Component& component
+)
+{
+    // A cell that closes among closed cells (a pocket crushed between
+    // fragments, a sliver whose neighbours closed in the same step) has no
+    // neighbourhood: its content goes to the gas nearest to it, the cells
+    // with gas in the first ring of face neighbours that has any (up to
+    // maxRings), in proportion to their gas volumes. Mass, momentum and
+    // energy are conserved; only beyond maxRings (or behind a processor
+    // face) is the content lost, and reported
+    const label maxRings = 4;
+    cutCellFields& w = srd_();
+    const labelListList& cellCells = mesh_.cellCells();
+    const scalarField& V = mesh_.V();
+    forAll(w.orphans, o)
+    {
+        const label seed = w.orphans[o];
+        const FixedList<scalar, cutCellFields::maxComponents>& c =
+            w.orphanContent[o];
+        ++w.searchStamp;
+        w.searchMark[seed] = w.searchStamp;
+        w.ring.clear();
+        w.ring.append(seed);
+        scalar gasVolume = 0;
+        for (label r = 0; r < maxRings && gasVolume <= 0; ++r)
+        {
+            w.nextRing.clear();
+            for (const label i : w.ring)
+            {
+                for (const label j : cellCells[i])
+                {
+                    if (w.searchMark[j] == w.searchStamp) continue;
+                    w.searchMark[j] = w.searchStamp;
+                    w.nextRing.append(j);
+                    if (phi[j] > 0) gasVolume += phi[j]*V[j];
+                }
+            }
+            w.ring.transfer(w.nextRing);
+        }
+        if (gasVolume <= 0)
+        {
+            lostMass_ += c[0];
+            lostEnergy_ += c[4];
+            continue;
+        }
+        for (const label j : w.ring)
+        {
+            if (phi[j] <= 0) continue;
+            // Content per cell volume: C w_j/V_j, w_j = phi_j V_j/sum
+            const scalar s = phi[j]/gasVolume;
+            for (label k = 0; k < nComp; ++k)
+            {
+                component(k, j) += s*c[k];
+            }
+        }
+    }
+    w.orphans.clear();
+    w.orphanContent.clear();
 }
 
 
@@ -301,8 +379,11 @@ void Foam::blastFluidSolver::countNeighbourhoods(const scalarField& phi)
     cutCellFields& w = srd_();
     const scalarField& small = w.small.primitiveField();
     scalarField& count = w.count.primitiveFieldRef();
-    count = 1;
-    for (label f = 0; f < nInternal_; ++f)
+    for (const label i : w.activeCells)
+    {
+        count[i] = 1;
+    }
+    for (const label f : w.activeFaces)
     {
         const label P = own_[f], N = nei_[f];
         if (srdLink(f, small[P], phi[N])) count[N] += 1;
@@ -330,12 +411,21 @@ void Foam::blastFluidSolver::gatherNeighbourhoods
     const scalarField& small = w.small.primitiveField();
     for (label k = 0; k < nComp; ++k)
     {
-        w.sum[k] = w.share[k].primitiveField();
+        const scalarField& sh = w.share[k].primitiveField();
+        scalarField& sk = w.sum[k];
+        for (const label i : w.activeCells)
+        {
+            sk[i] = sh[i];
+        }
         coupledNeighbourValues(w.share[k], w.shareNbr[k]);
     }
     if (!intoMembers)
     {
-        w.sumVolume = w.volume.primitiveField();
+        const scalarField& vol = w.volume.primitiveField();
+        for (const label i : w.activeCells)
+        {
+            w.sumVolume[i] = vol[i];
+        }
         coupledNeighbourValues(w.volume, w.volumeNbr);
     }
 
@@ -347,7 +437,7 @@ void Foam::blastFluidSolver::gatherNeighbourhoods
             w.sum[k][a] += w.share[k][b];
         }
     };
-    for (label f = 0; f < nInternal_; ++f)
+    for (const label f : w.activeFaces)
     {
         const label P = own_[f], N = nei_[f];
         if (intoMembers)
@@ -387,13 +477,13 @@ void Foam::blastFluidSolver::neighbourhoodStates
 )
 {
     // Neighbourhood states (per unit gas volume) replace the shares; a
-    // closing cell with no open neighbour loses its content (reported)
+    // closing cell without a neighbourhood goes to depositOrphans
     gatherNeighbourhoods(phi, nComp, false);
     cutCellFields& w = srd_();
     const scalarField& small = w.small.primitiveField();
     const scalarField& count = w.count.primitiveField();
     UPtrList<scalarField> share(w.shareValues(nComp));
-    forAll(phi, i)
+    for (const label i : w.activeCells)
     {
         if (w.sumVolume[i] > 0)
         {
@@ -405,9 +495,14 @@ void Foam::blastFluidSolver::neighbourhoodStates
         }
         else if (small[i] > 0)
         {
-            // The shares are content V/count: mass and energy are lost
-            lostMass_ += share[0][i]*count[i];
-            lostEnergy_ += share[4][i]*count[i];
+            // The shares are content V/count: kept for depositOrphans
+            FixedList<scalar, cutCellFields::maxComponents> c(Zero);
+            for (label k = 0; k < nComp; ++k)
+            {
+                c[k] = share[k][i]*count[i];
+            }
+            w.orphans.append(i);
+            w.orphanContent.append(c);
             for (label k = 0; k < nComp; ++k)
             {
                 share[k][i] = 0;
