@@ -271,13 +271,15 @@ void Foam::immersedBodyCoupling::startStep
         shareStart_[i] = s && e ? 0.5 : s ? 1 : 0;
     }
 
-    // Wall pieces at the mid-step positions
-    work2D_.setSize(xStart_.size());
-    forAll(work2D_, p)
-    {
-        work2D_[p] = 0.5*(xStart_[p] + xEnd_[p]);
-    }
-    setWallPieces(view, work2D_);
+    // Wall pieces at the start and at the end of the step, half each (the
+    // trapezoidal rule in time, as the cell's wall vector averages over
+    // the step): a wall that crosses a face line in the step has pieces in
+    // both cells it lies in, so each cell's force acts on the wall, not
+    // (as with mid-step pieces alone) on the solid inside the cell that
+    // holds no mid-step piece, which made a translating elastic body ring
+    clearWallPieces();
+    addWallPieces(view, xStart_, 0.5);
+    addWallPieces(view, xEnd_, 0.5);
 
     // Apertures of every face over the linear motion from start to end;
     // the two sides of a processor face (computed with the face reversed)
@@ -339,11 +341,7 @@ Foam::immersedBodyCoupling::fluidFractionEnd() const
 }
 
 
-void Foam::immersedBodyCoupling::setWallPieces
-(
-    const continuousView& view,
-    const UList<vector2D>& x
-)
+void Foam::immersedBodyCoupling::clearWallPieces()
 {
     pieceCell_.clear();
     pieceNodes_.clear();
@@ -353,7 +351,16 @@ void Foam::immersedBodyCoupling::setWallPieces
     pieceAreaSum_ = Zero;
     pieceLength_.setSize(mesh_.nCells());
     pieceLength_ = 0;
+}
 
+
+void Foam::immersedBodyCoupling::addWallPieces
+(
+    const continuousView& view,
+    const UList<vector2D>& x,
+    const scalar weight
+)
+{
     const edgeList& edges = view.boundaryEdges();
     const labelList& edgeTriangle = view.boundaryEdgeTriangle();
     const labelList& edgeLocal = view.boundaryEdgeLocalEdge();
@@ -366,8 +373,8 @@ void Foam::immersedBodyCoupling::setWallPieces
         const vector2D d = b - a;
         // The fragment is on the left: outward normal (dy, -dx); the
         // pressure pushes along the inward one
-        const vector2D inward(-d.y(), d.x());
-        const scalar L = mag(d);
+        const vector2D inward(-weight*d.y(), weight*d.x());
+        const scalar L = weight*mag(d);
         projection_.forEachSegmentPiece
         (
             a, b,
