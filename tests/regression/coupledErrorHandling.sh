@@ -10,6 +10,8 @@
 #     written; the last written time 2e-4 holds the gas fields,
 #     alpha.solid, fluidFraction and uniform/femdemState, and a restart
 #     from it (adjustTimeStep yes) reads gas and solid and runs to 2.2e-4.
+#     alpha.solid or U.solid of that time with other dimensions (a length):
+#     a FatalIOError naming the file and the entry 'dimensions'.
 #  2. SIGTERM and SIGINT during a run (deltaT 2e-6, no write time before
 #     endTime): exit status 0, 'Signal SIG<x> received at time t', the
 #     step t is written (gas fields, alpha.solid, fluidFraction,
@@ -69,6 +71,24 @@ grep -q "^blastFluidSolver: restart from the conservative state of time $last" d
     || fail "divergence: the restart did not read the gas and the solid of $last"
 echo ">> restart from $last (adjustTimeStep yes) read gas and solid and ran" \
      "$(grep -c '^Time = ' diverge/log.restart) steps to $(grep '^Time = ' diverge/log.restart | tail -1 | awk '{print $3}')"
+
+# ------------------------------------------- solid fields' dimensions
+# A restart from $last whose alpha.solid (dimensionless) or U.solid (m/s)
+# has other dimensions: a FatalIOError naming the file and the entry
+# 'dimensions', as for the gas fields; no signal
+solidDims() {  # field dimensions
+    local c=dims${1%%.*}
+    rm -rf "$c" && mkdir "$c" && cp -r diverge/0 diverge/constant diverge/system "diverge/$last" "$c/"
+    sed -i "s/^dimensions .*/dimensions $2;/" "$c/$last/$1"
+    (cd "$c" && jwlIbFoam > log.jwlIbFoam 2>&1) && fail "$1 with dimensions $2: accepted"
+    grep -q "FOAM FATAL IO ERROR" "$c/log.jwlIbFoam" && grep -q "$c/$last/$1" "$c/log.jwlIbFoam" \
+        && grep -q "entry 'dimensions'" "$c/log.jwlIbFoam" \
+        && ! grep -v '^trapFpe' "$c/log.jwlIbFoam" | grep -qiE 'segmentation|sigfpe|stack trace' \
+        || { tail -6 "$c/log.jwlIbFoam"; fail "$1 with dimensions $2: no FatalIOError naming the file and 'dimensions'"; }
+    echo ">> $last/$1 with dimensions $2: rejected ($(grep -m1 -o "entry 'dimensions' is .*" "$c/log.jwlIbFoam" | cut -c1-90))"
+}
+solidDims alpha.solid "[0 1 0 0 0 0 0]"
+solidDims U.solid "[0 1 0 0 0 0 0]"
 
 # ------------------------------------------------------- solid divergence
 # maxNodeSpeed 1e-9 m/s: the disc at rest starts to move as the ambient

@@ -87,7 +87,7 @@ fi
 # 5. a field whose dimensions are not the SI ones the solver assumes (a
 #    pressure written in bar as [1 -1 -2 0 0 0 0] * 1e5 cannot be told from
 #    Pa by its values; a velocity with pressure dimensions can): a
-#    FatalError naming the file and the entry 'dimensions'
+#    FatalIOError naming the file and the entry 'dimensions'
 cd "$JWLIBFOAM_TEST_DIR" || exit 1
 rm -rf badDims && mkdir badDims && cp -r base/0 base/constant base/system badDims/
 sed -i 's/^dimensions .*/dimensions [1 -1 -2 0 0 0 0];/' badDims/0/U
@@ -98,5 +98,56 @@ elif grep -q "badDims/0/U" badDims.log && grep -q "entry 'dimensions'" badDims.l
     echo ">> U with pressure dimensions: rejected, naming the file and 'dimensions'"
 else
     echo ">> U with pressure dimensions: message lacks file/entry  <-- FAIL"; tail -8 badDims.log; fail=1
+fi
+
+# 6. conditions on a patch of type wall, which the gas treats as a
+#    reflective wall (zero normal velocity, mirror-state pressure): one
+#    that treatment would ignore is a FatalIOError naming the field file
+#    and the patch (p fixedValue; U fixedValue with a normal component, a
+#    moving wall); U fixedValue (0 0 0), OpenFOAM's classic wall at rest,
+#    is honoured: the run equals the one with U slip (every step line and
+#    the final p, rho, U values) after the shock has reflected from it
+#    (the right end of the tube: shock there at t = 0.29 s)
+rm -rf wall && mkdir wall && cp -r base/0 base/constant wall/
+cp -r "$JWLIBFOAM_TUTORIALS/jwlIbFoam/sodShockTube/system" wall/
+sed -i 's/right { type patch;/right { type wall;/' wall/system/blockMeshDict
+foamDictionary -case wall -entry boundaryField.right -set '{ type slip; }' wall/0/U > /dev/null
+(cd wall && blockMesh > log.blockMesh 2>&1) || { echo ">> wall: blockMesh  <-- FAIL"; exit 1; }
+wallCase() {  # name field condition: wall with boundaryField.right of field set
+    rm -rf "$1" && cp -r wall "$1"
+    foamDictionary -case "$1" -entry boundaryField.right -set "$3" "$1/0/$2" > /dev/null
+}
+wallError() {  # name field condition
+    wallCase "$1" "$2" "$3"
+    if jwlIbFoam -case "$1" > "$1.log" 2>&1; then
+        echo ">> $2 $3 on a wall: accepted  <-- FAIL"; fail=1
+    elif grep -q "FOAM FATAL IO ERROR" "$1.log" && grep -q "$1/0/$2" "$1.log" \
+        && grep -q "entry 'boundaryField.right'" "$1.log" && ! grep -q "Signal\|sigFpe" "$1.log"; then
+        echo ">> $2 $3 on a wall: rejected ($(grep -m1 -o "entry 'boundaryField.right' is [^:]*:" "$1.log"))"
+    else
+        echo ">> $2 $3 on a wall: message lacks file/patch  <-- FAIL"; tail -8 "$1.log"; fail=1
+    fi
+}
+wallError wallFixedP p '{ type fixedValue; value uniform 1e5; }'
+wallError wallMoving U '{ type fixedValue; value uniform (10 0 0); }'
+wallCase wallSlip U '{ type slip; }'
+wallError wallZeroGradU U '{ type zeroGradient; }'
+wallCase wallRest U '{ type fixedValue; value uniform (0 0 0); }'
+if (cd wallSlip && jwlIbFoam > log.run 2>&1) && (cd wallRest && jwlIbFoam > log.run 2>&1); then
+    n=$(grep -c '^Time = ' wallSlip/log.run)
+    same=yes
+    cmp -s <(grep '^Time = ' wallSlip/log.run) <(grep '^Time = ' wallRest/log.run) || same=no
+    for f in p rho; do cmp -s wallSlip/0.35/$f wallRest/0.35/$f || same=no; done
+    cmp -s <(sed '/boundaryField/,$d' wallSlip/0.35/U) <(sed '/boundaryField/,$d' wallRest/0.35/U) || same=no
+    # The wall cell's pressure: 0.1 before the shock arrives, about 0.78
+    # after its reflection (p behind the incident shock 0.30)
+    pWall=$(/usr/bin/python3 -c "
+t = open('wallSlip/0.35/p').read()
+print(t[t.index('(', t.index('internalField')) + 1:].split(')')[0].split()[-1])")
+    echo ">> U fixedValue (0 0 0) on the wall: $n steps to 0.35 identical to U slip: $same" \
+         "(wall cell p $pWall after the reflection)"
+    [ $same = yes ] && awk -v p="$pWall" 'BEGIN { exit !(p > 0.5) }' || fail=1
+else
+    echo ">> U slip / fixedValue (0 0 0) on a wall: run failed  <-- FAIL"; tail -5 wallRest/log.run; fail=1
 fi
 exit $fail

@@ -2,7 +2,7 @@
 # Restart equality with the tutorials' own write settings (issue 17, item 3):
 # writeControl adjustableRunTime (+ adjustTimeStep for jwlIbFoam). A run
 # stopped by a signal at some step (SIGTERM/SIGINT serial; SIGTERM and
-# SIGUSR1 to mpirun on 2 ranks), then restarted with startFrom latestTime,
+# SIGUSR1 and SIGUSR2 to mpirun on 2 ranks), then restarted with startFrom latestTime,
 # must equal the uninterrupted run:
 #  - the same write times (plus the signal's own time directory), endTime
 #    written;
@@ -16,14 +16,9 @@
 # are clipped to the write times). The stop step is wherever the signal
 # lands (after a given number of logged steps); mpirun's exit status is
 # printed (Open MPI 4.1 exits 1 after SIGTERM/SIGINT to mpirun whatever the
-# ranks do, 0 after SIGUSR1; see README "Running in parallel").
-set -u
-cd "$JWLIBFOAM_TEST_DIR" || exit 1
-root=$JWLIBFOAM_PROJECT
-fail=0
-bad() { echo ">> $*  <-- FAIL"; fail=1; }
-setEntry() { sed -i "s/^$2 .*/$2 $3;/" "$1/system/controlDict"; }
-header() { printf 'FoamFile { version 2.0; format ascii; class dictionary; object %s; }\n' "$1"; }
+# ranks do, 0 after SIGUSR1/SIGUSR2; see README "Running in parallel" and
+# test parallelSignalStop).
+. "$JWLIBFOAM_PROJECT/tests/regression/signalStopHelpers.bash"
 launch() {  # np app: serial or 2-rank run in the current directory
     if [ "$1" = 1 ]; then exec "$2"; else exec mpirun -np "$1" "$2" -parallel; fi
 }
@@ -35,15 +30,11 @@ writeTimes() {  # dir: the time directories but 0, in time order
 # $case, runs it, sends the signal after nSteps logged steps, restarts to
 # endTime and compares with the uninterrupted run $ref
 interrupt() {
-    local ref=$1 c=$2 sig=$3 n=$4 np=$5 app=$6 pid rc k
+    local ref=$1 c=$2 sig=$3 n=$4 np=$5 app=$6 pid rc
     rm -rf "$c" && cp -r "$ref.base" "$c"
     (cd "$c" && launch "$np" "$app" > log.run 2>&1) &
     pid=$!
-    for ((k = 0; k < 600; k++)); do
-        [ "$(grep -c '^Time = ' "$c/log.run" 2> /dev/null)" -ge "$n" ] && break
-        kill -0 $pid 2> /dev/null || break
-        sleep 0.02
-    done
+    waitSteps "$c/log.run" $pid "$n"
     # The subshell exec'd the solver (or mpirun): $pid is its process
     kill -"$sig" $pid 2> /dev/null
     wait $pid; rc=$?
@@ -100,7 +91,7 @@ interrupt() {
     [ "$nDiff" -eq 0 ] && [ "$nSame" -gt 0 ] && [ "$linesSame" = yes ] \
         || bad "$c: restarted run differs from the uninterrupted one"
     [ "$np" != 1 ] || [ "$rc" -eq 0 ] || bad "$c: exit status $rc (expected 0)"
-    [ "$np" = 1 ] || [ "$sig" != USR1 ] || [ "$rc" -eq 0 ] || bad "$c: mpirun exit status $rc after SIGUSR1 (expected 0)"
+    [ "$np" = 1 ] || [ "${sig#USR}" = "$sig" ] || [ "$rc" -eq 0 ] || bad "$c: mpirun exit status $rc after SIG$sig (expected 0)"
     awk -v a="${wCut##* }" -v b="$eT" 'BEGIN { exit !(a == b) }' \
         || bad "$c: endTime $eT not written (last write time ${wCut##* })"
 }
@@ -126,9 +117,7 @@ interrupt gas gasTERM TERM 40 1 jwlIbFoam
 interrupt gas gasINT INT 110 1 jwlIbFoam
 
 # ---- coupled box, 20x20 cells, 38 triangles
-rm -rf box.base && cp -r "$root/tests/regression/coupledData/closedBoxSolid" box.base
-sed -i 's/(80 80 1)/(20 20 1)/' box.base/system/blockMeshDict
-sed -i 's/^targetSize .*/targetSize 0.02;/; s/nSegments 48/nSegments 12/' box.base/system/femdemMeshDict
+smallBox box.base
 setEntry box.base writeControl adjustableRunTime
 setEntry box.base writeInterval 2e-4
 setEntry box.base adjustTimeStep yes
@@ -147,6 +136,7 @@ setEntry box2.base endTime 1.2e-3
 reference box2 2 jwlIbFoam
 interrupt box2 box2TERM TERM 60 2 jwlIbFoam
 interrupt box2 box2USR1 USR1 130 2 jwlIbFoam
+interrupt box2 box2USR2 USR2 100 2 jwlIbFoam
 
 # ---- femdemFoam: a bar pulled at one end, deltaT 3e-7 (4e-5/3e-7 = 133.3)
 mkdir -p bar.base/system bar.base/constant

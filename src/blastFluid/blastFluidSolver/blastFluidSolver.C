@@ -24,51 +24,6 @@ namespace Foam
 
 namespace
 {
-    //- A field read from its file carries the dimensions the solver
-    //  assumes: the solver works on the values, and a pressure given in
-    //  bar or a density in g/cm3 (dimensions written for them) would
-    //  otherwise be taken as Pa and kg/m3 without a word
-    template<class FieldType>
-    void checkDimensions
-    (
-        FieldType& field,
-        const Foam::dimensionSet& expected
-    )
-    {
-        if (field.headerOk() && field.dimensions() != expected)
-        {
-            FatalErrorInFunction
-                << "file " << field.objectPath() << ": entry 'dimensions' is "
-                << field.dimensions() << " but " << field.name()
-                << " must have the dimensions " << expected << " (SI units)"
-                << Foam::exit(Foam::FatalError);
-        }
-    }
-
-    Foam::IOobject readIO
-    (
-        const Foam::word& name,
-        const Foam::fvMesh& mesh,
-        const Foam::IOobject::readOption r
-    )
-    {
-        Foam::IOobject io
-        (
-            name,
-            mesh.time().timeName(),
-            mesh,
-            r,
-            Foam::IOobject::AUTO_WRITE
-        );
-        // Numbers, list sizes and dimensions before OpenFOAM reads the file
-        if (r != Foam::IOobject::NO_READ)
-        {
-            Foam::caseChecks::checkFieldFile(io);
-        }
-        return io;
-    }
-
-
     //- Stop on an entry of dict that is not in valid (a misspelt optional
     //  entry would otherwise be ignored silently and its default used)
     void checkKnownEntries
@@ -86,6 +41,85 @@ namespace
                     << "Unknown entry '" << key << "'. Valid entries: "
                     << flatOutput(valid)
                     << Foam::exit(Foam::FatalIOError);
+            }
+        }
+    }
+
+
+    //- A patch the gas treats as reflective (wall, symmetry, slip) gets
+    //  zero normal velocity and the mirror-state pressure whatever its
+    //  conditions say; its conditions must be ones that treatment honours
+    //  (as OpenFOAM insists on symmetry conditions on symmetry patches),
+    //  else the user's fixedValue p, normal wall velocity or inletOutlet
+    //  would be ignored without a word. Honoured: U slip, noSlip,
+    //  symmetry(Plane) or fixedValue without a normal component (a wall at
+    //  rest or sliding in its plane: the inviscid gas cannot tell it from
+    //  slip); the scalars zeroGradient, slip or symmetry(Plane)
+    void reflectiveConditionError
+    (
+        const Foam::regIOobject& field,
+        const Foam::fvPatch& pp,
+        const Foam::word& bcType,
+        const Foam::string& why
+    )
+    {
+        using namespace Foam;
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, field.objectPath(), -1)
+            << "file " << field.objectPath() << ": entry 'boundaryField."
+            << pp.name() << "' is " << bcType << " but the gas solver treats"
+            << " patch '" << pp.name() << "' (type " << pp.type() << ") as a"
+            << " reflective wall (no flow through it, mirror-state pressure):"
+            << " " << why.c_str() << ". On walls use " << field.name() << ' '
+            << (field.name() == "U" ? "slip (or noSlip)" : "zeroGradient")
+            << "; for an inflow or outlet give the patch the type patch"
+            << " (fixedValue, zeroGradient)" << exit(FatalIOError);
+    }
+
+    void checkReflectiveConditions
+    (
+        const Foam::fvPatch& pp,
+        const Foam::volVectorField& U,
+        const Foam::UList<const Foam::volScalarField*>& scalars
+    )
+    {
+        using namespace Foam;
+        const label patchi = pp.index();
+        const fvPatchVectorField& Ub = U.boundaryField()[patchi];
+        const word& Utype = Ub.type();
+        if (Utype == "fixedValue")
+        {
+            const vectorField nf(pp.nf());
+            forAll(Ub, j)
+            {
+                if (mag(Ub[j] & nf[j]) > 1e-9*mag(Ub[j]))
+                {
+                    reflectiveConditionError
+                    (
+                        U, pp, Utype, "the wall velocity " + name(Ub[j])
+                      + " of face " + name(j) + " has a normal component"
+                        " (the walls do not move: it would be ignored)"
+                    );
+                }
+            }
+        }
+        else if
+        (
+            Utype != "slip" && Utype != "noSlip" && Utype != "symmetry"
+         && Utype != "symmetryPlane"
+        )
+        {
+            reflectiveConditionError(U, pp, Utype, "it would be ignored");
+        }
+        for (const volScalarField* f : scalars)
+        {
+            const word& type = f->boundaryField()[patchi].type();
+            if
+            (
+                type != "zeroGradient" && type != "slip"
+             && type != "symmetry" && type != "symmetryPlane"
+            )
+            {
+                reflectiveConditionError(*f, pp, type, "it would be ignored");
             }
         }
     }
@@ -266,6 +300,17 @@ void Foam::blastFluidSolver::setGeometry()
         )
         {
             patchKind_[patchi] = REFLECTIVE;
+            // The scalar fields read from the case
+            typedef List<const volScalarField*> fieldList;
+            checkReflectiveConditions
+            (
+                pp,
+                U_,
+                twoPhase_
+              ? fieldList
+                ({&p_, alpha1Ptr_.get(), rho1Ptr_.get(), rho2Ptr_.get()})
+              : fieldList({&p_, &rho_})
+            );
         }
         else
         {
@@ -1221,32 +1266,32 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     QActive_(false),
     CQ_(1.5),
     CL_(0.06),
-    p_(readIO("p", mesh, IOobject::MUST_READ), mesh),
-    U_(readIO("U", mesh, IOobject::MUST_READ), mesh),
+    p_(caseChecks::fieldIO("p", mesh, IOobject::MUST_READ), mesh),
+    U_(caseChecks::fieldIO("U", mesh, IOobject::MUST_READ), mesh),
     e_
     (
-        readIO("e", mesh, IOobject::NO_READ),
+        caseChecks::fieldIO("e", mesh, IOobject::NO_READ),
         mesh,
         dimensionedScalar(dimEnergy/dimMass, Zero),
         "calculated"
     ),
     rho_
     (
-        readIO("rho", mesh, IOobject::READ_IF_PRESENT),
+        caseChecks::fieldIO("rho", mesh, IOobject::READ_IF_PRESENT),
         mesh,
         dimensionedScalar(dimDensity, Zero),
         "calculated"
     ),
     rhoU_
     (
-        readIO("rhoU", mesh, IOobject::READ_IF_PRESENT),
+        caseChecks::fieldIO("rhoU", mesh, IOobject::READ_IF_PRESENT),
         mesh,
         dimensionedVector(dimDensity*dimVelocity, Zero),
         "calculated"
     ),
     rhoE_
     (
-        readIO("rhoE", mesh, IOobject::READ_IF_PRESENT),
+        caseChecks::fieldIO("rhoE", mesh, IOobject::READ_IF_PRESENT),
         mesh,
         dimensionedScalar(dimEnergy/dimVolume, Zero),
         "calculated"
@@ -1310,9 +1355,9 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
         // setCharge's products first): name the entry, not the missing file
         if
         (
-            !readIO("alpha." + m1, mesh, IOobject::MUST_READ)
+            !caseChecks::fieldIO("alpha." + m1, mesh, IOobject::MUST_READ)
                 .typeHeaderOk<volScalarField>(true)
-         && readIO("alpha." + m2, mesh, IOobject::MUST_READ)
+         && caseChecks::fieldIO("alpha." + m2, mesh, IOobject::MUST_READ)
                 .typeHeaderOk<volScalarField>(true)
         )
         {
@@ -1328,22 +1373,34 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
         (
             new volScalarField
             (
-                readIO("alpha." + m1, mesh, IOobject::MUST_READ), mesh
+                caseChecks::fieldIO("alpha." + m1, mesh, IOobject::MUST_READ),
+                mesh
             )
         );
         rho1Ptr_.reset
         (
-            new volScalarField(readIO("rho." + m1, mesh, IOobject::MUST_READ), mesh)
+            new volScalarField
+            (
+                caseChecks::fieldIO("rho." + m1, mesh, IOobject::MUST_READ),
+                mesh
+            )
         );
         rho2Ptr_.reset
         (
-            new volScalarField(readIO("rho." + m2, mesh, IOobject::MUST_READ), mesh)
+            new volScalarField
+            (
+                caseChecks::fieldIO("rho." + m2, mesh, IOobject::MUST_READ),
+                mesh
+            )
         );
         alphaRho1Ptr_.reset
         (
             new volScalarField
             (
-                readIO("alphaRho." + m1, mesh, IOobject::READ_IF_PRESENT),
+                caseChecks::fieldIO
+                (
+                    "alphaRho." + m1, mesh, IOobject::READ_IF_PRESENT
+                ),
                 mesh,
                 dimensionedScalar(dimDensity, Zero),
                 "calculated"
@@ -1446,17 +1503,17 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
         updateBurn(mesh.time().value());
     }
 
-    checkDimensions(p_, dimPressure);
-    checkDimensions(U_, dimVelocity);
-    checkDimensions(rho_, dimDensity);
-    checkDimensions(rhoU_, dimDensity*dimVelocity);
-    checkDimensions(rhoE_, dimEnergy/dimVolume);
+    caseChecks::checkDimensions(p_, dimPressure);
+    caseChecks::checkDimensions(U_, dimVelocity);
+    caseChecks::checkDimensions(rho_, dimDensity);
+    caseChecks::checkDimensions(rhoU_, dimDensity*dimVelocity);
+    caseChecks::checkDimensions(rhoE_, dimEnergy/dimVolume);
     if (twoPhase_)
     {
-        checkDimensions(alpha1Ptr_(), dimless);
-        checkDimensions(rho1Ptr_(), dimDensity);
-        checkDimensions(rho2Ptr_(), dimDensity);
-        checkDimensions(alphaRho1Ptr_(), dimDensity);
+        caseChecks::checkDimensions(alpha1Ptr_(), dimless);
+        caseChecks::checkDimensions(rho1Ptr_(), dimDensity);
+        caseChecks::checkDimensions(rho2Ptr_(), dimDensity);
+        caseChecks::checkDimensions(alphaRho1Ptr_(), dimDensity);
     }
 
     if (restart)

@@ -9,45 +9,22 @@
 #include "programmedBurn.H"
 #include "caseChecks.H"
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-    Foam::IOobject burnIO
-    (
-        const Foam::word& name,
-        const Foam::fvMesh& mesh,
-        const Foam::IOobject::readOption r
-    )
-    {
-        Foam::IOobject io
-        (
-            name, mesh.time().timeName(), mesh, r,
-            Foam::IOobject::AUTO_WRITE
-        );
-        if (r != Foam::IOobject::NO_READ)
-        {
-            Foam::caseChecks::checkFieldFile(io);
-        }
-        return io;
-    }
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::programmedBurn::programmedBurn(const fvMesh& mesh)
 :
-    lightingTime_(burnIO("lightingTime", mesh, IOobject::MUST_READ), mesh),
-    burnTime_(burnIO("burnTime", mesh, IOobject::MUST_READ), mesh),
+    lightingTime_(caseChecks::fieldIO("lightingTime", mesh, IOobject::MUST_READ), mesh),
+    burnTime_(caseChecks::fieldIO("burnTime", mesh, IOobject::MUST_READ), mesh),
     burnFraction_
     (
-        burnIO("burnFraction", mesh, IOobject::NO_READ),
+        caseChecks::fieldIO("burnFraction", mesh, IOobject::NO_READ),
         mesh,
         dimensionedScalar(dimless, Zero),
         "zeroGradient"
     )
 {
+    caseChecks::checkDimensions(lightingTime_, dimTime);
+    caseChecks::checkDimensions(burnTime_, dimTime);
     const scalarField& tau = burnTime_.primitiveField();
     forAll(tau, i)
     {

@@ -58,31 +58,14 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
     viewTriangles_(nullptr),
     alphaSolid_
     (
-        caseChecks::checkFieldFile
-        (
-            IOobject
-            (
-                "alpha.solid",
-                mesh.time().timeName(),
-                mesh,
-                IOobject::READ_IF_PRESENT,
-                IOobject::AUTO_WRITE
-            )
-        ),
+        caseChecks::fieldIO("alpha.solid", mesh, IOobject::READ_IF_PRESENT),
         mesh,
         dimensionedScalar(dimless, Zero),
         zeroGradientFvPatchScalarField::typeName
     ),
     Usolid_
     (
-        IOobject
-        (
-            "U.solid",
-            mesh.time().timeName(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::AUTO_WRITE
-        ),
+        caseChecks::fieldIO("U.solid", mesh, IOobject::NO_READ),
         mesh,
         dimensionedVector(dimVelocity, Zero),
         zeroGradientFvPatchVectorField::typeName
@@ -98,6 +81,10 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
         "crackOpening", "crackVenting"
     });
     caseChecks::checkInput(dict);
+    // As the gas fields: a file with other dimensions is a wrong case
+    // (U.solid is recomputed, not read, but a restart time holds it)
+    caseChecks::checkDimensions(alphaSolid_, dimless);
+    caseChecks::checkFieldFile(Usolid_, dimVelocity);
     for (const entry& e : dict)
     {
         if (e.keyword() != "FoamFile" && !valid.found(e.keyword()))

@@ -11,6 +11,7 @@ License
 #include "OSspecific.H"
 #include "Enum.H"
 #include "IOobject.H"
+#include "objectRegistry.H"
 #include "dimensionSet.H"
 #include "vector.H"
 
@@ -111,6 +112,42 @@ bool compoundInRange(const token& t, const scalar maxMag)
         }
     }
     return true;
+}
+
+
+//- The checks of checkFieldFile on the file of io (if present); its
+//  'dimensions' into *dims when asked for. False without file or entry
+bool fieldFileDimensions(const IOobject& io, dimensionSet* dims = nullptr)
+{
+    const fileName file = io.objectPath();
+    if (!isFile(file))
+    {
+        return false;    // the reader reports a missing MUST_READ field
+    }
+    negativeCompoundSize(file);
+    IFstream is(file);
+    const dictionary dict(is);
+    const bool found = dict.found("dimensions");
+    if (found)
+    {
+        // OpenFOAM's unit lookup fails without naming the file
+        dimensionSet read(dimless);
+        caseChecks::readNaming
+        (
+            dict,
+            [&]()
+            {
+                ITstream& ds = dict.lookup("dimensions");
+                ds >> read;
+            }
+        );
+        if (dims)
+        {
+            dims->reset(read);    // (operator= checks the dimensions)
+        }
+    }
+    caseChecks::checkNumbers(dict, GREAT);
+    return found;
 }
 
 } // End anonymous namespace
@@ -364,30 +401,57 @@ void Foam::caseChecks::checkInput(const dictionary& dict)
 
 const Foam::IOobject& Foam::caseChecks::checkFieldFile(const IOobject& io)
 {
-    const fileName file = io.objectPath();
-    if (!isFile(file))
-    {
-        return io;    // the reader reports a missing MUST_READ field
-    }
-    negativeCompoundSize(file);
-    IFstream is(file);
-    const dictionary dict(is);
-    if (dict.found("dimensions"))
-    {
-        // OpenFOAM's unit lookup fails without naming the file
-        readNaming
-        (
-            dict,
-            [&]()
-            {
-                dimensionSet dims(dimless);
-                ITstream& ds = dict.lookup("dimensions");
-                ds >> dims;
-            }
-        );
-    }
-    checkNumbers(dict, GREAT);
+    fieldFileDimensions(io);
     return io;
+}
+
+
+const Foam::IOobject& Foam::caseChecks::checkFieldFile
+(
+    const IOobject& io,
+    const dimensionSet& expected
+)
+{
+    dimensionSet dims(expected);
+    if (fieldFileDimensions(io, &dims))
+    {
+        checkDimensions(io, dims, expected);
+    }
+    return io;
+}
+
+
+Foam::IOobject Foam::caseChecks::fieldIO
+(
+    const word& name,
+    const objectRegistry& db,
+    const IOobject::readOption r
+)
+{
+    IOobject io(name, db.time().timeName(), db, r, IOobject::AUTO_WRITE);
+    // Numbers, list sizes and dimensions before OpenFOAM reads the file
+    if (r != IOobject::NO_READ)
+    {
+        checkFieldFile(io);
+    }
+    return io;
+}
+
+
+void Foam::caseChecks::checkDimensions
+(
+    const IOobject& io,
+    const dimensionSet& dims,
+    const dimensionSet& expected
+)
+{
+    if (dims != expected)
+    {
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, io.objectPath(), -1)
+            << "file " << io.objectPath() << ": entry 'dimensions' is "
+            << dims << " but " << io.name() << " must have the dimensions "
+            << expected << " (SI units)" << exit(FatalIOError);
+    }
 }
 
 

@@ -79,6 +79,7 @@ Foam::stopOnSignal::stopOnSignal()
     installHandler(SIGINT, &oldInt_);
     installHandler(SIGTERM, &oldTerm_);
     installHandler(SIGUSR1, &oldUsr1_);
+    installHandler(SIGUSR2, &oldUsr2_);
 
     // A closed output (the reader of the log gone) must not end the run
     // unwritten: mpirun, when it is signalled itself, stops reading the
@@ -100,6 +101,7 @@ Foam::stopOnSignal::~stopOnSignal()
     sigaction(SIGINT, &oldInt_, nullptr);
     sigaction(SIGTERM, &oldTerm_, nullptr);
     sigaction(SIGUSR1, &oldUsr1_, nullptr);
+    sigaction(SIGUSR2, &oldUsr2_, nullptr);
     sigaction(SIGPIPE, &oldPipe_, nullptr);
 }
 
@@ -125,6 +127,7 @@ Foam::word Foam::stopOnSignal::signalName(const int sigNum)
         case SIGINT: return "SIGINT";
         case SIGTERM: return "SIGTERM";
         case SIGUSR1: return "SIGUSR1";
+        case SIGUSR2: return "SIGUSR2";
         default: return "signal_" + Foam::name(sigNum);
     }
 }
