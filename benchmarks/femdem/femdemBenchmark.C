@@ -14,7 +14,11 @@ Description
     - fragmented: every joint broken, the triangles pressed together and
       shaken so that contact is active between most neighbours.
     Prints triangle-steps per CPU second and bytes per triangle (the state, the
-    joint topology and the contact work space included) on '>>' lines.
+    joint topology and the contact work space included) on '>>' lines, the
+    rate of the median step (per-step thread CPU time: less scattered on a
+    shared machine) and a hash of the final node positions' bits (two builds
+    of libfemdem integrate bitwise the same trajectories if and only if, up
+    to hash collisions, they print the same hashes).
 
 Usage
     femdemBenchmark [nx ny steps nxFragmented nyFragmented stepsFragmented
@@ -33,6 +37,10 @@ Usage
 #include <chrono>
 #include <ctime>
 #include <cstdio>
+#include <cstdint>
+#include <algorithm>
+#include <vector>
+#include <time.h>
 #include <string>
 
 using namespace Foam;
@@ -60,6 +68,14 @@ dictionary props(const word& contact)
 }
 
 
+double threadSeconds()
+{
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9*ts.tv_nsec;
+}
+
+
 double seconds(const std::chrono::steady_clock::time_point& t0)
 {
     return std::chrono::duration<double>
@@ -83,10 +99,20 @@ void run
     // CPU time of the process (one thread): the machine may be shared
     const std::clock_t c0 = std::clock();
     const auto t0 = std::chrono::steady_clock::now();
-    for (label i = 0; i < steps; ++i) solid.step();
+    // Each step's thread CPU time too: on a shared machine the median
+    // step is far less scattered than the total (preemption, other jobs)
+    std::vector<double> stepTimes(steps);
+    for (label i = 0; i < steps; ++i)
+    {
+        const double s0 = threadSeconds();
+        solid.step();
+        stepTimes[i] = threadSeconds() - s0;
+    }
     const double wall = seconds(t0);
     const double dt = double(std::clock() - c0)/CLOCKS_PER_SEC;
     const double rate = double(solid.nTriangles())*steps/dt;
+    std::sort(stepTimes.begin(), stepTimes.end());
+    const double median = steps ? stepTimes[steps/2] : 0;
     const double bytes = double(solid.memoryBytes())/solid.nTriangles();
     std::printf
     (
@@ -98,6 +124,26 @@ void run
         long(solid.nBrokenJoints()), long(steps), dt, wall, rate, bytes,
         long(solid.contact().nCandidatePairs()),
         long(solid.contact().nActivePairs())
+    );
+    std::printf
+    (
+        ">> %s: median step %.3g triangle-steps/s/core\n", name.c_str(),
+        median > 0 ? solid.nTriangles()/median : 0.0
+    );
+    // Hash of the node positions' bits: two builds of the library give the
+    // same hash only if they integrate bitwise the same trajectories
+    std::uint64_t hash = 1469598103934665603ull;
+    const unsigned char* raw =
+        reinterpret_cast<const unsigned char*>(solid.x().cdata());
+    const std::size_t nBytes = solid.x().size()*sizeof(vector2D);
+    for (std::size_t i = 0; i < nBytes; ++i)
+    {
+        hash = (hash ^ raw[i])*1099511628211ull;
+    }
+    std::printf
+    (
+        ">> %s: position hash %016llx\n", name.c_str(),
+        static_cast<unsigned long long>(hash)
     );
     if (pc)
     {

@@ -408,7 +408,8 @@ bool Foam::contactLaws::potential::contactorTarget
     {
         if (!(freeC & (1u << k))) continue;
 
-        const label nA = 3*c + k, nB = 3*c + (k + 1) % 3;
+        // (k + 1) % 3 without the integer division
+        const label nA = 3*c + k, nB = 3*c + (k == 2 ? 0 : k + 1);
         const vector2D& A = x[nA];
         const vector2D& B = x[nB];
 
@@ -426,28 +427,26 @@ bool Foam::contactLaws::potential::contactorTarget
         if (len2 <= 0) continue;
 
         // lambda_i(s) = l0[i] + s dl[i]; trivial rejection (both ends
-        // outside one side) before any division
+        // outside one side) before any division. An edge inside the
+        // target passes the clipping below unchanged (s0 = 0, s1 = 1): it
+        // is not flagged separately (the flag cost more than it saved).
         scalar l0[3], dl[3];
-        bool outside = false, inside = true;
+        bool outside = false;
         for (label i = 0; i < 3; ++i)
         {
-            const vector2D& a = *T[(i + 1) % 3];
+            const vector2D& a = *T[i == 2 ? 0 : i + 1];
             l0[i] = (ex[i]*(A.y() - a.y()) - ey[i]*(A.x() - a.x()))*iA2;
             dl[i] = (ex[i]*dy - ey[i]*dx)*iA2;
             const scalar l1 = l0[i] + dl[i];
             if (l0[i] <= 0 && l1 <= 0) { outside = true; break; }
-            if (l0[i] < 0 || l1 < 0) inside = false;
         }
         if (outside) continue;
         scalar s0 = 0, s1 = 1;
-        if (!inside)
+        for (label i = 0; i < 3; ++i)
         {
-            for (label i = 0; i < 3; ++i)
-            {
-                const scalar l1 = l0[i] + dl[i];
-                if (l0[i] < 0) s0 = max(s0, -l0[i]/dl[i]);
-                else if (l1 < 0) s1 = min(s1, -l0[i]/dl[i]);
-            }
+            const scalar l1 = l0[i] + dl[i];
+            if (l0[i] < 0) s0 = max(s0, -l0[i]/dl[i]);
+            else if (l1 < 0) s1 = min(s1, -l0[i]/dl[i]);
         }
         if (!(s1 > s0)) continue;
         // The length only for an edge that crosses the target
