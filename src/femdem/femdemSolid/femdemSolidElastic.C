@@ -16,15 +16,9 @@ Description
     forces are computed at (no extra pass over the triangles) and sets the
     step used from the next step on.
 
-    The force loop is compiled twice (femdemSolidKernelClones.H): for the
-    baseline x86-64 and for AVX-512 processors, whose 32 vector registers
-    hold the ~20 live values of a triangle without spilling; bitwise the
-    same results.
-
 \*---------------------------------------------------------------------------*/
 
 #include "femdemSolid.H"
-#include "femdemSolidKernelClones.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -184,7 +178,7 @@ struct triangleKernel
     stepAccount step;
 
     template<class Law>
-    FEMDEM_KERNEL_INLINE void run(const label* ids, const label n)
+    void run(const label* ids, const label n)
     {
         for (label i = 0; i < n; ++i)
         {
@@ -266,7 +260,6 @@ void Foam::femdemSolid::materialTable::set(const UList<femdemMaterial>& mats)
 
 
 template<class Kernel>
-FEMDEM_KERNEL_INLINE
 void Foam::femdemSolid::forEachLawGroup(Kernel& kernel) const
 {
     for (label l = 0; l < elasticLaw::nLaws; ++l)
@@ -313,7 +306,6 @@ void Foam::femdemSolid::setLawGroups()
 }
 
 
-FEMDEM_KERNEL_CLONES
 Foam::femdemSolid::stableStep Foam::femdemSolid::addTriangleForces
 (
     UList<vector2D>& fe,
