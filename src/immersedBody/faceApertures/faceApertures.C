@@ -215,11 +215,16 @@ Foam::scalar Foam::faceApertures::averageCoveredLength
     t[n++] = 0;
     const vector2D d = p1 - p0;
     FixedList<vector2D, 3> dx;
+    // (for the shortcut below: no vertex on the face's line, the face's
+    // ends strictly on one side of every edge line, at the start)
+    bool strict = true;
+    label nLeft = 0;
     for (label k = 0; k < 3; ++k)
     {
         dx[k] = x1[k] - x0[k];
         const scalar s0 = cross2(d, x0[k] - p0);
         const scalar s1 = cross2(d, x1[k] - p0);
+        strict = strict && s0 != 0;
         if ((s0 < 0) != (s1 < 0) && s0 != s1)
         {
             const scalar r = s0/(s0 - s1);
@@ -235,6 +240,9 @@ Foam::scalar Foam::faceApertures::averageCoveredLength
         {
             // (e0 + tau de) x (q - x0_k - tau dx_k)
             const vector2D r0 = *q - x0[k];
+            const scalar side0 = cross2(e0, r0);
+            strict = strict && side0 != 0;
+            nLeft += side0 > 0;
             addRoots
             (
                 cross2(e0, r0),
@@ -266,7 +274,25 @@ Foam::scalar Foam::faceApertures::averageCoveredLength
         const scalar h = b - a, m = 0.5*(a + b);
         return 0.5*h*(covered(m - g*h) + covered(m + g*h));
     };
-    const scalar tol = 1e-13*mag(d);
+    const scalar tol = 1e-10*mag(d);
+
+    // Without events inside the step nothing changes how the face and the
+    // triangle meet: a face wholly inside (or wholly outside) at the start,
+    // strictly, stays so (its ends would have to cross an edge line, or a
+    // vertex the face's line): no quadrature for those
+    if (n == 2 && strict)
+    {
+        // Wholly inside: both ends left of all three edges (or right of
+        // all, a clockwise triangle)
+        if (nLeft == 6 || nLeft == 0)
+        {
+            return mag(d);
+        }
+        if (covered(0) <= 0)
+        {
+            return 0;
+        }
+    }
 
     scalar integral = 0;
     for (label i = 0; i + 1 < n; ++i)

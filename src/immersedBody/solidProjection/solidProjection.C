@@ -55,6 +55,48 @@ Foam::FixedList<Foam::scalar, 3> Foam::solidProjection::barycentric
 }
 
 
+Foam::solidProjection::Containment Foam::solidProjection::containment
+(
+    const vector2D& a,
+    const vector2D& b,
+    const vector2D& c,
+    const vector2D* cv,
+    const label nv
+)
+{
+    using polygonClipping::cross;
+    // The triangle inside the (convex, counter-clockwise) cell: each
+    // vertex left of every cell edge (as clipConvex keeps it)
+    bool triangleIn = true;
+    for (label e = 0; e < nv && triangleIn; ++e)
+    {
+        const vector2D& p = cv[e];
+        const vector2D& q = cv[e + 1 < nv ? e + 1 : 0];
+        triangleIn =
+            cross(p, q, a) >= 0 && cross(p, q, b) >= 0 && cross(p, q, c) >= 0;
+    }
+    if (triangleIn)
+    {
+        return TRIANGLE_IN_CELL;
+    }
+    // The cell inside a counter-clockwise triangle: each cell vertex
+    // strictly left of its edges
+    if (cross(a, b, c) <= 0)
+    {
+        return PARTIAL;
+    }
+    for (label k = 0; k < nv; ++k)
+    {
+        const vector2D& v = cv[k];
+        if (!(cross(a, b, v) > 0 && cross(b, c, v) > 0 && cross(c, a, v) > 0))
+        {
+            return PARTIAL;
+        }
+    }
+    return CELL_IN_TRIANGLE;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::solidProjection::solidProjection
@@ -70,7 +112,22 @@ Foam::solidProjection::solidProjection
     lastTriangle_(cellArea_.size(), -1),
     lastSegment_(cellArea_.size(), -1),
     segmentTag_(0)
-{}
+{
+    cellCentroid_.setSize(cellArea_.size());
+    forAll(cellCentroid_, celli)
+    {
+        scalar area;
+        polygonClipping::areaAndCentroid
+        (
+            SubList<vector2D>
+            (
+                cellVertices_, cellStart_[celli + 1] - cellStart_[celli],
+                cellStart_[celli]
+            ),
+            area, cellCentroid_[celli]
+        );
+    }
+}
 
 
 Foam::solidProjection::solidProjection(const polyMesh& mesh)
@@ -193,21 +250,32 @@ void Foam::solidProjection::project
                 }
                 lastTriangle_[celli] = t;
 
-                polygon_.clear();
-                polygon_.append(a);
-                polygon_.append(b);
-                polygon_.append(c);
-                polygonClipping::clipConvex
-                (
-                    polygon_,
-                    &cellVertices_[cellStart_[celli]],
-                    cellStart_[celli + 1] - cellStart_[celli],
-                    work_
-                );
-
+                // Most overlaps are a whole cell inside a triangle or a
+                // whole triangle inside a cell: no clipping for those (the
+                // clipped triangle would be the triangle itself, vertex
+                // for vertex)
+                const vector2D* cv = &cellVertices_[cellStart_[celli]];
+                const label nv = cellStart_[celli + 1] - cellStart_[celli];
                 scalar area;
                 vector2D centroid;
-                polygonClipping::areaAndCentroid(polygon_, area, centroid);
+                const Containment inside = containment(a, b, c, cv, nv);
+                if (inside == CELL_IN_TRIANGLE)
+                {
+                    area = cellArea_[celli];
+                    centroid = cellCentroid_[celli];
+                }
+                else
+                {
+                    polygon_.clear();
+                    polygon_.append(a);
+                    polygon_.append(b);
+                    polygon_.append(c);
+                    if (inside != TRIANGLE_IN_CELL)
+                    {
+                        polygonClipping::clipConvex(polygon_, cv, nv, work_);
+                    }
+                    polygonClipping::areaAndCentroid(polygon_, area, centroid);
+                }
                 if (area <= 0)
                 {
                     return;
