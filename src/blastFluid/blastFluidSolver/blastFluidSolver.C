@@ -1551,19 +1551,16 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
 Foam::scalar Foam::blastFluidSolver::maxDeltaT(const scalar maxCo) const
 {
     const vectorField& U = U_.primitiveField();
-    scalar lambda = 0;
     // Cut cells: a cell without gas keeps the state it closed with (that
     // of a sliver compressed to nothing, up to 1e17 Pa) and exchanges
     // nothing; it must not set the step (it did: 3e-10 s instead of 3e-8 s
     // in the fragmenting copper tube)
     const scalarField* phi =
         cutCells_ ? &fluidFractionPtr_->primitiveField() : nullptr;
-    forAll(U, i)
-    {
-        if (phi && (*phi)[i] <= 0) continue;
-        lambda = max(lambda, (mag(U[i]) + c_[i])*CoGeom_[i]);
-    }
-    reduce(lambda, maxOp<scalar>());
+    const scalar lambda = gasCellsMax
+    (
+        phi, 0, [&](const label i) { return (mag(U[i]) + c_[i])*CoGeom_[i]; }
+    );
     return maxCo/max(lambda, VSMALL);
 }
 
@@ -1701,19 +1698,14 @@ Foam::vector Foam::blastFluidSolver::totalMomentum() const
 
 Foam::scalar Foam::blastFluidSolver::maxPressure() const
 {
-    if (!fluidFractionPtr_.valid())
-    {
-        return gMax(p_.primitiveField());
-    }
     // Cells covered by the solid keep a frozen state: not gas
-    const scalarField& phi = fluidFractionPtr_->primitiveField();
     const scalarField& p = p_.primitiveField();
-    scalar pMax = -GREAT;
-    forAll(p, i)
-    {
-        if (phi[i] > 0) pMax = max(pMax, p[i]);
-    }
-    return returnReduce(pMax, maxOp<scalar>());
+    return gasCellsMax
+    (
+        fluidFractionPtr_.valid()
+      ? &fluidFractionPtr_->primitiveField() : nullptr,
+        -GREAT, [&](const label i) { return p[i]; }
+    );
 }
 
 
@@ -1721,12 +1713,7 @@ Foam::scalar Foam::blastFluidSolver::minPressure() const
 {
     const tmp<scalarField> phi = fluidFraction();
     const scalarField& p = p_.primitiveField();
-    scalar pMin = GREAT;
-    forAll(p, i)
-    {
-        if (phi()[i] > 0) pMin = min(pMin, p[i]);
-    }
-    return returnReduce(pMin, minOp<scalar>());
+    return -gasCellsMax(&phi(), -GREAT, [&](const label i) { return -p[i]; });
 }
 
 
@@ -1734,12 +1721,7 @@ Foam::scalar Foam::blastFluidSolver::minDensity() const
 {
     const tmp<scalarField> phi = fluidFraction();
     const scalarField& rho = rho_.primitiveField();
-    scalar rhoMin = GREAT;
-    forAll(rho, i)
-    {
-        if (phi()[i] > 0) rhoMin = min(rhoMin, rho[i]);
-    }
-    return returnReduce(rhoMin, minOp<scalar>());
+    return -gasCellsMax(&phi(), -GREAT, [&](const label i) { return -rho[i]; });
 }
 
 
