@@ -12,18 +12,6 @@ namespace
     // Strong joints: the bodies stay intact
     const std::string strong =
         "tensileStrength 1e9; cohesion 1e9; GI 1e6; GII 1e6;";
-
-    vector2D meanVelocity(const femdemSolid& s, const label first, const label last)
-    {
-        vector2D p(Zero);
-        scalar m = 0;
-        for (label n = first; n < last; ++n)
-        {
-            p += s.v()[n]/s.invMass()[n];
-            m += 1/s.invMass()[n];
-        }
-        return p/m;
-    }
 }
 
 
