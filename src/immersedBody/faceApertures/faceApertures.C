@@ -430,7 +430,71 @@ Foam::scalar Foam::faceApertures::coveredLength
 }
 
 
+bool Foam::faceApertures::inside
+(
+    const vector2D& x,
+    const FixedList<vector2D, 3>& tri
+)
+{
+    // Either orientation; a point on an edge shared by two triangles is in
+    // both (the caller counts a face once)
+    auto cross = [](const vector2D& a, const vector2D& b, const vector2D& c)
+    {
+        return (b.x() - a.x())*(c.y() - a.y()) - (b.y() - a.y())*(c.x() - a.x());
+    };
+    const scalar twiceArea = cross(tri[0], tri[1], tri[2]);
+    const scalar tol = 1e-12*mag(twiceArea);
+    if (tol <= 0) return false;
+    const scalar c0 = cross(tri[0], tri[1], x);
+    const scalar c1 = cross(tri[1], tri[2], x);
+    const scalar c2 = cross(tri[2], tri[0], x);
+    return
+        (c0 >= -tol && c1 >= -tol && c2 >= -tol)
+     || (c0 <= tol && c1 <= tol && c2 <= tol);
+}
+
+
 void Foam::faceApertures::update
+(
+    const UList<vector2D>& points0,
+    const UList<vector2D>& points1,
+    const UList<FixedList<label, 3>>& triangles
+)
+{
+    boundaryFace_.setSize(length_.size());
+    boundaryFace_ = true;
+    integrate(points0, points1, triangles);
+}
+
+
+void Foam::faceApertures::update
+(
+    const UList<vector2D>& points0,
+    const UList<vector2D>& points1,
+    const UList<FixedList<label, 3>>& triangles,
+    const UList<edge>& boundaryEdges
+)
+{
+    boundaryFace_.setSize(length_.size());
+    boundaryFace_ = false;
+    for (const edge& e : boundaryEdges)
+    {
+        const vector2D& a0 = points0[e.start()];
+        const vector2D& b0 = points0[e.end()];
+        const vector2D& a1 = points1[e.start()];
+        const vector2D& b1 = points1[e.end()];
+        index_.forEachCandidate
+        (
+            min(min(a0, b0), min(a1, b1)),
+            max(max(a0, b0), max(a1, b1)),
+            [&](const label f) { boundaryFace_[f] = true; }
+        );
+    }
+    integrate(points0, points1, triangles);
+}
+
+
+void Foam::faceApertures::integrate
 (
     const UList<vector2D>& points0,
     const UList<vector2D>& points1,
@@ -476,6 +540,15 @@ void Foam::faceApertures::update
                  || max(p0.y(), p1.y()) < lo.y() || min(p0.y(), p1.y()) > hi.y()
                 )
                 {
+                    return;
+                }
+                if (!boundaryFace_[f])
+                {
+                    // Covered all the step or open all the step
+                    if (covered_[f] < length_[f] && inside(0.5*(p0 + p1), x0))
+                    {
+                        covered_[f] = length_[f];
+                    }
                     return;
                 }
                 ++nPairs_;

@@ -240,13 +240,36 @@ void Foam::immersedBodyCoupling::startStep
 
     const List<triangleVertices>& tris = view.triangles();
     viewTriangles_ = &tris;
+
+    // Wall pieces at the start and at the end of the step, half each (the
+    // trapezoidal rule in time, as the cell's wall vector averages over
+    // the step): a wall that crosses a face line in the step has pieces in
+    // both cells it lies in, so each cell's force acts on the wall, not
+    // (as with mid-step pieces alone) on the solid inside the cell that
+    // holds no mid-step piece, which made a translating elastic body ring.
+    // The cells with pieces are the ones the boundary crosses: only those
+    // are clipped by the projections
+    clearWallPieces();
+    setOutlineEdges(view);
+    boundaryCell_.setSize(mesh_.nCells());
+    addWallPieces(view, xStart_, 0.5);
+    markBoundaryCells(0, xStart_);
     projection_.project
     (
-        xStart_, tris, vPoint_, alphaWork_, UsolidWork_, overlapsStart_
+        xStart_, tris, vPoint_, alphaWork_, UsolidWork_, overlapsStart_,
+        &boundaryCell_
     );
     copyToFields();
     solidAreaStart_ = alphaWork_*projection_.cellArea();
-    projection_.project(xEnd_, tris, vPoint_, alphaEnd_, work2D_, overlapsEnd_);
+
+    const label nStartPieces = pieceCell_.size();
+    addWallPieces(view, xEnd_, 0.5);
+    markBoundaryCells(nStartPieces, xEnd_);
+    projection_.project
+    (
+        xEnd_, tris, vPoint_, alphaEnd_, work2D_, overlapsEnd_,
+        &boundaryCell_
+    );
     solidAreaEnd_ = alphaEnd_*projection_.cellArea();
 
     // A cell's wall force goes half to the solid at the start, half to
@@ -258,20 +281,10 @@ void Foam::immersedBodyCoupling::startStep
         shareStart_[i] = s && e ? 0.5 : s ? 1 : 0;
     }
 
-    // Wall pieces at the start and at the end of the step, half each (the
-    // trapezoidal rule in time, as the cell's wall vector averages over
-    // the step): a wall that crosses a face line in the step has pieces in
-    // both cells it lies in, so each cell's force acts on the wall, not
-    // (as with mid-step pieces alone) on the solid inside the cell that
-    // holds no mid-step piece, which made a translating elastic body ring
-    clearWallPieces();
-    addWallPieces(view, xStart_, 0.5);
-    addWallPieces(view, xEnd_, 0.5);
-
     // Apertures of every face over the linear motion from start to end;
     // the two sides of a processor face (computed with the face reversed)
     // take the same value, so that both see the same flux and neighbours
-    apertures_->update(xStart_, xEnd_, tris);
+    apertures_->update(xStart_, xEnd_, tris, outlineEdges_);
     scalarField& faceAp = faceApertureWork_;
     faceAp.setSize(mesh_.nFaces());
     forAll(faceAp, f)
@@ -338,6 +351,58 @@ void Foam::immersedBodyCoupling::clearWallPieces()
     pieceAreaSum_ = Zero;
     pieceLength_.setSize(mesh_.nCells());
     pieceLength_ = 0;
+}
+
+
+void Foam::immersedBodyCoupling::setOutlineEdges(const continuousView& view)
+{
+    // The view's boundary edges bound the union of its triangles only
+    // while no triangle is inverted; a view folded where fragments of
+    // closed cracks separate (crackVenting false) has inverted triangles,
+    // and the edges of those bound the rest of the union
+    outlineEdges_ = view.boundaryEdges();
+    foldEdges_.clear();
+    for (const triangleVertices& t : view.triangles())
+    {
+        if
+        (
+            polygonClipping::cross(xStart_[t[0]], xStart_[t[1]], xStart_[t[2]])
+         <= 0
+         || polygonClipping::cross(xEnd_[t[0]], xEnd_[t[1]], xEnd_[t[2]]) <= 0
+        )
+        {
+            for (label k = 0; k < 3; ++k)
+            {
+                foldEdges_.append(edge(t[k], t[(k + 1) % 3]));
+            }
+        }
+    }
+    outlineEdges_.append(foldEdges_);
+}
+
+
+void Foam::immersedBodyCoupling::markBoundaryCells
+(
+    const label firstPiece,
+    const UList<vector2D>& x
+)
+{
+    boundaryCell_ = false;
+    for (label k = firstPiece; k < pieceCell_.size(); ++k)
+    {
+        boundaryCell_[pieceCell_[k]] = true;
+    }
+    for (const edge& e : foldEdges_)
+    {
+        projection_.forEachSegmentPiece
+        (
+            x[e.start()], x[e.end()],
+            [&](const label celli, const scalar, const scalar)
+            {
+                boundaryCell_[celli] = true;
+            }
+        );
+    }
 }
 
 

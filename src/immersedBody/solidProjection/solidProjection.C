@@ -221,7 +221,8 @@ void Foam::solidProjection::project
     const UList<vector2D>& pointVelocities,
     scalarField& alphaSolid,
     List<vector2D>& Usolid,
-    solidOverlaps& overlaps
+    solidOverlaps& overlaps,
+    const UList<bool>* boundaryCell
 )
 {
     alphaSolid.setSize(nCells());
@@ -250,51 +251,37 @@ void Foam::solidProjection::project
                 }
                 lastTriangle_[celli] = t;
 
-                // Most overlaps are a whole cell inside a triangle or a
-                // whole triangle inside a cell: no clipping for those (the
-                // clipped triangle would be the triangle itself, vertex
-                // for vertex)
-                const vector2D* cv = &cellVertices_[cellStart_[celli]];
-                const label nv = cellStart_[celli + 1] - cellStart_[celli];
                 scalar area;
                 vector2D centroid;
-                const Containment inside = containment(a, b, c, cv, nv);
-                if (inside == CELL_IN_TRIANGLE)
+                if (boundaryCell && !(*boundaryCell)[celli])
                 {
-                    area = cellArea_[celli];
+                    // The solid's boundary does not cross the cell: it
+                    // is all solid if its centroid is in a triangle (then
+                    // counted once, with that triangle), else all gas;
+                    // an inverted triangle (a folded view) counts for
+                    // nothing, as its negative clipped area does below
+                    if (alphaSolid[celli] > 0) return;
+                    if (polygonClipping::cross(a, b, c) <= 0) return;
                     centroid = cellCentroid_[celli];
+                    const FixedList<scalar, 3> w =
+                        barycentric(centroid, a, b, c);
+                    const scalar tol = -1e-12;
+                    if (!(w[0] >= tol && w[1] >= tol && w[2] >= tol)) return;
+                    area = cellArea_[celli];
                 }
                 else
                 {
-                    polygon_.clear();
-                    polygon_.append(a);
-                    polygon_.append(b);
-                    polygon_.append(c);
-                    if (inside != TRIANGLE_IN_CELL)
-                    {
-                        polygonClipping::clipConvex(polygon_, cv, nv, work_);
-                    }
-                    polygonClipping::areaAndCentroid(polygon_, area, centroid);
+                    overlapArea(a, b, c, celli, area, centroid);
                 }
                 if (area <= 0)
                 {
                     return;
                 }
-
-                // The velocity is linear: its mean is its centroid value
-                const FixedList<scalar, 3> w = barycentric(centroid, a, b, c);
-                const vector2D u =
-                    w[0]*pointVelocities[tri[0]]
-                  + w[1]*pointVelocities[tri[1]]
-                  + w[2]*pointVelocities[tri[2]];
-
-                alphaSolid[celli] += area;
-                Usolid[celli] += area*u;
-
-                overlaps.cell.append(celli);
-                overlaps.triangle.append(t);
-                overlaps.area.append(area);
-                overlaps.centroid.append(centroid);
+                addOverlap
+                (
+                    celli, t, area, centroid, points, tri, pointVelocities,
+                    alphaSolid, Usolid, overlaps
+                );
             }
         );
     }
@@ -307,6 +294,75 @@ void Foam::solidProjection::project
             alphaSolid[celli] = min(alphaSolid[celli]/cellArea_[celli], 1.0);
         }
     }
+}
+
+
+void Foam::solidProjection::overlapArea
+(
+    const vector2D& a,
+    const vector2D& b,
+    const vector2D& c,
+    const label celli,
+    scalar& area,
+    vector2D& centroid
+)
+{
+    // Most overlaps are a whole cell inside a triangle or a whole triangle
+    // inside a cell: no clipping for those (the clipped triangle would be
+    // the triangle itself, vertex for vertex)
+    const vector2D* cv = &cellVertices_[cellStart_[celli]];
+    const label nv = cellStart_[celli + 1] - cellStart_[celli];
+    const Containment inside = containment(a, b, c, cv, nv);
+    if (inside == CELL_IN_TRIANGLE)
+    {
+        area = cellArea_[celli];
+        centroid = cellCentroid_[celli];
+        return;
+    }
+    polygon_.clear();
+    polygon_.append(a);
+    polygon_.append(b);
+    polygon_.append(c);
+    if (inside != TRIANGLE_IN_CELL)
+    {
+        polygonClipping::clipConvex(polygon_, cv, nv, work_);
+    }
+    polygonClipping::areaAndCentroid(polygon_, area, centroid);
+}
+
+
+void Foam::solidProjection::addOverlap
+(
+    const label celli,
+    const label t,
+    const scalar area,
+    const vector2D& centroid,
+    const UList<vector2D>& points,
+    const FixedList<label, 3>& tri,
+    const UList<vector2D>& pointVelocities,
+    scalarField& alphaSolid,
+    List<vector2D>& Usolid,
+    solidOverlaps& overlaps
+)
+{
+    // The velocity is linear: its mean over the overlap is its value at
+    // the overlap's centroid
+    const FixedList<scalar, 3> w = barycentric
+    (
+        centroid, points[tri[0]], points[tri[1]], points[tri[2]]
+    );
+    alphaSolid[celli] += area;
+    Usolid[celli] +=
+        area
+       *(
+            w[0]*pointVelocities[tri[0]]
+          + w[1]*pointVelocities[tri[1]]
+          + w[2]*pointVelocities[tri[2]]
+        );
+    overlaps.cell.append(celli);
+    overlaps.triangle.append(t);
+    overlaps.area.append(area);
+    overlaps.centroid.append(centroid);
 }
 
 
