@@ -438,10 +438,7 @@ bool Foam::faceApertures::inside
 {
     // Either orientation; a point on an edge shared by two triangles is in
     // both (the caller counts a face once)
-    auto cross = [](const vector2D& a, const vector2D& b, const vector2D& c)
-    {
-        return (b.x() - a.x())*(c.y() - a.y()) - (b.y() - a.y())*(c.x() - a.x());
-    };
+    using polygonClipping::cross;
     const scalar twiceArea = cross(tri[0], tri[1], tri[2]);
     const scalar tol = 1e-12*mag(twiceArea);
     if (tol <= 0) return false;
