@@ -9,22 +9,6 @@ License
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::label Foam::cellBinIndex::binX(const scalar x) const
-{
-    // Clamped in floating point first: a far or non-finite coordinate
-    // must not overflow the conversion
-    const scalar t = max((x - origin_.x())/binSize_.x(), scalar(0));
-    return label(min(t, scalar(nx_ - 1)));
-}
-
-
-Foam::label Foam::cellBinIndex::binY(const scalar y) const
-{
-    const scalar t = max((y - origin_.y())/binSize_.y(), scalar(0));
-    return label(min(t, scalar(ny_ - 1)));
-}
-
-
 Foam::FixedList<Foam::label, 4> Foam::cellBinIndex::binRange
 (
     const UList<vector2D>& vertices,
@@ -56,6 +40,12 @@ Foam::cellBinIndex::cellBinIndex
     ny_(1)
 {
     const label nPolygons = polygonStart.size() - 1;
+    // Polygons without vertices are in no bin and do not size the bins
+    label nPlaced = 0;
+    for (label p = 0; p < nPolygons; ++p)
+    {
+        if (polygonStart[p + 1] > polygonStart[p]) ++nPlaced;
+    }
 
     vector2D lo(GREAT, GREAT), hi(-GREAT, -GREAT);
     for (const vector2D& v : vertices)
@@ -63,13 +53,13 @@ Foam::cellBinIndex::cellBinIndex
         lo = min(lo, v);
         hi = max(hi, v);
     }
-    if (nPolygons > 0)
+    if (nPlaced > 0)
     {
         // Square-ish bins, about one polygon each
         const vector2D span = max(hi - lo, vector2D(SMALL, SMALL));
-        const scalar binEdge = Foam::sqrt(span.x()*span.y()/nPolygons);
-        nx_ = max(label(1), min(label(span.x()/binEdge) + 1, nPolygons));
-        ny_ = max(label(1), min(label(span.y()/binEdge) + 1, nPolygons));
+        const scalar binEdge = Foam::sqrt(span.x()*span.y()/nPlaced);
+        nx_ = max(label(1), min(label(span.x()/binEdge) + 1, nPlaced));
+        ny_ = max(label(1), min(label(span.y()/binEdge) + 1, nPlaced));
         origin_ = lo;
         binSize_ = vector2D(span.x()/nx_, span.y()/ny_)*(1 + 1e-12);
     }
@@ -78,6 +68,7 @@ Foam::cellBinIndex::cellBinIndex
     binStart_.setSize(nx_*ny_ + 1, Zero);
     for (label p = 0; p < nPolygons; ++p)
     {
+        if (polygonStart[p + 1] == polygonStart[p]) continue;
         const FixedList<label, 4> r = binRange(vertices, polygonStart, p);
         for (label j = r[2]; j <= r[3]; ++j)
         {
@@ -95,6 +86,7 @@ Foam::cellBinIndex::cellBinIndex
     labelList fill(SubList<label>(binStart_, nx_*ny_));
     for (label p = 0; p < nPolygons; ++p)
     {
+        if (polygonStart[p + 1] == polygonStart[p]) continue;
         const FixedList<label, 4> r = binRange(vertices, polygonStart, p);
         for (label j = r[2]; j <= r[3]; ++j)
         {

@@ -184,18 +184,32 @@ Foam::scalar Foam::faceApertures::averageEdgeOverlap
 Foam::cellBinIndex Foam::faceApertures::makeIndex
 (
     const UList<vector2D>& start,
-    const UList<vector2D>& end
+    const UList<vector2D>& end,
+    const bool midpoints
 )
 {
-    List<vector2D> vertices(2*start.size());
+    // The faces of empty patches (length 0) are in no bin: they would all
+    // sit in the bin of the origin and every triangle over it would visit
+    // them
+    List<vector2D> vertices((midpoints ? 1 : 2)*start.size());
     labelList polygonStart(start.size() + 1);
+    label n = 0;
     forAll(start, f)
     {
-        vertices[2*f] = start[f];
-        vertices[2*f + 1] = end[f];
-        polygonStart[f] = 2*f;
+        polygonStart[f] = n;
+        if (start[f] == end[f]) continue;
+        if (midpoints)
+        {
+            vertices[n++] = 0.5*(start[f] + end[f]);
+        }
+        else
+        {
+            vertices[n++] = start[f];
+            vertices[n++] = end[f];
+        }
     }
-    polygonStart[start.size()] = 2*start.size();
+    polygonStart[start.size()] = n;
+    vertices.setSize(n);
     return cellBinIndex(vertices, polygonStart);
 }
 
@@ -319,7 +333,9 @@ Foam::faceApertures::faceApertures
     start_(start),
     end_(end),
     length_(start.size()),
-    index_(makeIndex(start, end)),
+    midpoint_(start.size()),
+    index_(makeIndex(start, end, false)),
+    midpointIndex_(makeIndex(start, end, true)),
     covered_(start.size(), 0),
     nPairs_(0),
     onLeft_(start.size(), 0),
@@ -329,6 +345,7 @@ Foam::faceApertures::faceApertures
     forAll(length_, f)
     {
         length_[f] = mag(end_[f] - start_[f]);
+        midpoint_[f] = 0.5*(start_[f] + end_[f]);
     }
 }
 
@@ -460,6 +477,8 @@ void Foam::faceApertures::update
 {
     boundaryFace_.setSize(length_.size());
     boundaryFace_ = true;
+    boundaryBin_.setSize(index_.nBins());
+    boundaryBin_ = true;
     integrate(points0, points1, triangles);
 }
 
@@ -474,6 +493,8 @@ void Foam::faceApertures::update
 {
     boundaryFace_.setSize(length_.size());
     boundaryFace_ = false;
+    boundaryBin_.setSize(index_.nBins());
+    boundaryBin_ = false;
     for (const edge& e : boundaryEdges)
     {
         const vector2D& a0 = points0[e.start()];
@@ -487,7 +508,62 @@ void Foam::faceApertures::update
             [&](const label f) { boundaryFace_[f] = true; }
         );
     }
+    // Every bin a boundary face is listed in: a triangle that reaches the
+    // face shares one of them with it
+    forAll(boundaryFace_, f)
+    {
+        if (boundaryFace_[f])
+        {
+            index_.forEachBin
+            (
+                min(start_[f], end_[f]), max(start_[f], end_[f]),
+                [&](const label b) { boundaryBin_[b] = true; }
+            );
+        }
+    }
     integrate(points0, points1, triangles);
+}
+
+
+void Foam::faceApertures::clipFace
+(
+    const label f,
+    const vector2D& lo,
+    const vector2D& hi,
+    const FixedList<vector2D, 3>& x0,
+    const FixedList<vector2D, 3>& x1,
+    const bool moving
+)
+{
+    const vector2D& p0 = start_[f];
+    const vector2D& p1 = end_[f];
+    // Face and swept triangle boxes apart: nothing covered
+    if
+    (
+        max(p0.x(), p1.x()) < lo.x() || min(p0.x(), p1.x()) > hi.x()
+     || max(p0.y(), p1.y()) < lo.y() || min(p0.y(), p1.y()) > hi.y()
+    )
+    {
+        return;
+    }
+    ++nPairs_;
+    // A face along an edge shared by two triangles would be counted twice:
+    // such parts are counted per side, once
+    label edge = -1;
+    const label side = collinearSide(p0, p1, x0, x1, edge);
+    if (side == 0)
+    {
+        covered_[f] +=
+            moving
+          ? averageCoveredLength(p0, p1, x0, x1)
+          : coveredLength(p0, p1, x0[0], x0[1], x0[2]);
+        return;
+    }
+    const label j = (edge + 1) % 3;
+    const scalar c =
+        averageEdgeOverlap(p0, p1, x0[edge], x1[edge], x0[j], x1[j]);
+    if (side > 0) onLeft_[f] += c;
+    else onRight_[f] += c;
 }
 
 
@@ -518,54 +594,41 @@ void Foam::faceApertures::integrate
             hi = max(hi, max(x0[k], x1[k]));
         }
 
-        index_.forEachCandidate
+        // The faces a boundary edge's swept box reaches, clipped over the
+        // step: only where the triangle's box touches a bin with one (a
+        // boundary face may be listed in other bins too: all candidates)
+        if (index_.touchesFlagged(lo, hi, boundaryBin_))
+        {
+            index_.forEachCandidate
+            (
+                lo, hi,
+                [&](const label f)
+                {
+                    if (!boundaryFace_[f] || lastTriangle_[f] == t) return;
+                    lastTriangle_[f] = t;
+                    clipFace(f, lo, hi, x0, x1, moving);
+                }
+            );
+        }
+
+        // Every other face is covered all the step or open all the step,
+        // as its midpoint is in a triangle at the start or not (each face
+        // is in one bin of the midpoint index: visited once per triangle)
+        const vector2D lo0(min(x0[0], min(x0[1], x0[2])));
+        const vector2D hi0(max(x0[0], max(x0[1], x0[2])));
+        midpointIndex_.forEachCandidate
         (
-            lo, hi,
+            lo0, hi0,
             [&](const label f)
             {
-                if (lastTriangle_[f] == t || length_[f] <= 0)
-                {
-                    return;
-                }
-                lastTriangle_[f] = t;
-                const vector2D& p0 = start_[f];
-                const vector2D& p1 = end_[f];
-                // Face and swept triangle boxes apart: nothing covered
                 if
                 (
-                    max(p0.x(), p1.x()) < lo.x() || min(p0.x(), p1.x()) > hi.x()
-                 || max(p0.y(), p1.y()) < lo.y() || min(p0.y(), p1.y()) > hi.y()
+                    !boundaryFace_[f] && covered_[f] < length_[f]
+                 && inside(midpoint_[f], x0)
                 )
                 {
-                    return;
+                    covered_[f] = length_[f];
                 }
-                if (!boundaryFace_[f])
-                {
-                    // Covered all the step or open all the step
-                    if (covered_[f] < length_[f] && inside(0.5*(p0 + p1), x0))
-                    {
-                        covered_[f] = length_[f];
-                    }
-                    return;
-                }
-                ++nPairs_;
-                // A face along an edge shared by two triangles would be
-                // counted twice: such parts are counted per side, once
-                label edge = -1;
-                const label side = collinearSide(p0, p1, x0, x1, edge);
-                if (side == 0)
-                {
-                    covered_[f] +=
-                        moving
-                      ? averageCoveredLength(p0, p1, x0, x1)
-                      : coveredLength(p0, p1, x0[0], x0[1], x0[2]);
-                    return;
-                }
-                const label j = (edge + 1) % 3;
-                const scalar c =
-                    averageEdgeOverlap(p0, p1, x0[edge], x1[edge], x0[j], x1[j]);
-                if (side > 0) onLeft_[f] += c;
-                else onRight_[f] += c;
             }
         );
     }

@@ -108,25 +108,35 @@ Foam::solidProjection::solidProjection
     cellVertices_(cellVertices),
     cellStart_(cellStart),
     cellArea_(orientAndMeasure(cellVertices_, cellStart_)),
+    cellCentroid_(cellArea_.size()),
+    cellLo_(cellArea_.size()),
+    cellHi_(cellArea_.size()),
     index_(cellVertices_, cellStart_),
     lastTriangle_(cellArea_.size(), -1),
     lastSegment_(cellArea_.size(), -1),
     segmentTag_(0)
 {
-    cellCentroid_.setSize(cellArea_.size());
     forAll(cellCentroid_, celli)
     {
-        scalar area;
-        polygonClipping::areaAndCentroid
+        const SubList<vector2D> poly
         (
-            SubList<vector2D>
-            (
-                cellVertices_, cellStart_[celli + 1] - cellStart_[celli],
-                cellStart_[celli]
-            ),
-            area, cellCentroid_[celli]
+            cellVertices_, cellStart_[celli + 1] - cellStart_[celli],
+            cellStart_[celli]
         );
+        scalar area;
+        polygonClipping::areaAndCentroid(poly, area, cellCentroid_[celli]);
+        cellLo_[celli] = vector2D(GREAT, GREAT);
+        cellHi_[celli] = vector2D(-GREAT, -GREAT);
+        for (const vector2D& v : poly)
+        {
+            cellLo_[celli] = min(cellLo_[celli], v);
+            cellHi_[celli] = max(cellHi_[celli], v);
+        }
     }
+    centroidIndex_.reset
+    (
+        new cellBinIndex(cellCentroid_, identity(cellCentroid_.size() + 1))
+    );
 }
 
 
@@ -232,55 +242,95 @@ void Foam::solidProjection::project
     overlaps.clear();
     lastTriangle_ = -1;
 
+    // The bins that the boundary cells' boxes touch: a triangle whose box
+    // touches none of them overlaps no boundary cell
+    boundaryBin_.setSize(index_.nBins());
+    boundaryBin_ = !boundaryCell;
+    if (boundaryCell)
+    {
+        forAll(*boundaryCell, celli)
+        {
+            if ((*boundaryCell)[celli])
+            {
+                index_.forEachBin
+                (
+                    cellLo_[celli], cellHi_[celli],
+                    [&](const label b) { boundaryBin_[b] = true; }
+                );
+            }
+        }
+    }
+
     forAll(triangles, t)
     {
         const FixedList<label, 3>& tri = triangles[t];
         const vector2D& a = points[tri[0]];
         const vector2D& b = points[tri[1]];
         const vector2D& c = points[tri[2]];
+        const vector2D lo(min(a, min(b, c))), hi(max(a, max(b, c)));
 
-        index_.forEachCandidate
+        // The cells the boundary crosses (all, without boundaryCell) are
+        // clipped
+        if (index_.touchesFlagged(lo, hi, boundaryBin_))
+        {
+            index_.forEachCandidate
+            (
+                lo, hi,
+                [&](const label celli)
+                {
+                    if (lastTriangle_[celli] == t) return;
+                    lastTriangle_[celli] = t;
+                    if (boundaryCell && !(*boundaryCell)[celli]) return;
+                    scalar area;
+                    vector2D centroid;
+                    overlapArea(a, b, c, celli, area, centroid);
+                    if (area <= 0) return;
+                    addOverlap
+                    (
+                        celli, t, area, centroid,
+                        barycentric(centroid, a, b, c), tri,
+                        pointVelocities, alphaSolid, Usolid, overlaps
+                    );
+                }
+            );
+        }
+
+        // The others are all solid if their centroid is in a triangle
+        // (then counted once, with the first such triangle), else all gas;
+        // an inverted triangle (a folded view) counts for nothing, as its
+        // negative clipped area does above. Each cell is in one bin of the
+        // centroid index: visited once per triangle
+        const scalar twiceArea = polygonClipping::cross(a, b, c);
+        if (!boundaryCell || twiceArea <= 0)
+        {
+            continue;
+        }
+        centroidIndex_->forEachCandidate
         (
-            min(a, min(b, c)),
-            max(a, max(b, c)),
+            lo, hi,
             [&](const label celli)
             {
-                if (lastTriangle_[celli] == t)
+                if ((*boundaryCell)[celli] || alphaSolid[celli] > 0) return;
+                const vector2D& x = cellCentroid_[celli];
+                // Without a division first: a centroid clearly outside
+                // (the test below, with a wider margin) is most candidates
+                using polygonClipping::cross;
+                const scalar margin = -1e-9*twiceArea;
+                if
+                (
+                    cross(x, b, c) < margin || cross(a, x, c) < margin
+                 || cross(a, b, x) < margin
+                )
                 {
                     return;
                 }
-                lastTriangle_[celli] = t;
-
-                scalar area;
-                vector2D centroid;
-                if (boundaryCell && !(*boundaryCell)[celli])
-                {
-                    // The solid's boundary does not cross the cell: it
-                    // is all solid if its centroid is in a triangle (then
-                    // counted once, with that triangle), else all gas;
-                    // an inverted triangle (a folded view) counts for
-                    // nothing, as its negative clipped area does below
-                    if (alphaSolid[celli] > 0) return;
-                    if (polygonClipping::cross(a, b, c) <= 0) return;
-                    centroid = cellCentroid_[celli];
-                    const FixedList<scalar, 3> w =
-                        barycentric(centroid, a, b, c);
-                    const scalar tol = -1e-12;
-                    if (!(w[0] >= tol && w[1] >= tol && w[2] >= tol)) return;
-                    area = cellArea_[celli];
-                }
-                else
-                {
-                    overlapArea(a, b, c, celli, area, centroid);
-                }
-                if (area <= 0)
-                {
-                    return;
-                }
+                const FixedList<scalar, 3> w = barycentric(x, a, b, c);
+                const scalar tol = -1e-12;
+                if (!(w[0] >= tol && w[1] >= tol && w[2] >= tol)) return;
                 addOverlap
                 (
-                    celli, t, area, centroid, points, tri, pointVelocities,
-                    alphaSolid, Usolid, overlaps
+                    celli, t, cellArea_[celli], x, w, tri,
+                    pointVelocities, alphaSolid, Usolid, overlaps
                 );
             }
         );
@@ -337,7 +387,7 @@ void Foam::solidProjection::addOverlap
     const label t,
     const scalar area,
     const vector2D& centroid,
-    const UList<vector2D>& points,
+    const FixedList<scalar, 3>& w,
     const FixedList<label, 3>& tri,
     const UList<vector2D>& pointVelocities,
     scalarField& alphaSolid,
@@ -346,11 +396,7 @@ void Foam::solidProjection::addOverlap
 )
 {
     // The velocity is linear: its mean over the overlap is its value at
-    // the overlap's centroid
-    const FixedList<scalar, 3> w = barycentric
-    (
-        centroid, points[tri[0]], points[tri[1]], points[tri[2]]
-    );
+    // the overlap's centroid (barycentric weights w there)
     alphaSolid[celli] += area;
     Usolid[celli] +=
         area
