@@ -1,0 +1,468 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | jwlIbFoam: rock blasting with OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+\*---------------------------------------------------------------------------*/
+
+#include "ductNetwork.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::ductNetwork::ductNetwork
+(
+    const blastMixture& mixture,
+    const dictionary& dict
+)
+:
+    mixture_(mixture),
+    flux_(fluxScheme::New(dict)),
+    RKorder_(dict.getOrDefault<label>("RKorder", 2)),
+    frictionFactor_(dict.getOrDefault<scalar>("frictionFactor", 0)),
+    wallWork_(0),
+    mouthMass_(0),
+    mouthEnergy_(0)
+{
+    if (RKorder_ < 1 || RKorder_ > 3)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'RKorder' must be 1, 2 or 3, got " << RKorder_
+            << exit(FatalIOError);
+    }
+    if (!(frictionFactor_ >= 0) || !std::isfinite(frictionFactor_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'frictionFactor' (Fanning) must be a number >= 0, got "
+            << frictionFactor_ << exit(FatalIOError);
+    }
+    setSize(0, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::ductNetwork::setSize(const label nVolumes, const label nInterfaces)
+{
+    const label n = nVolumes, nf = nInterfaces;
+    geometry& g = geometry_;
+    g.V0.setSize(n, 0); g.V1.setSize(n, 0);
+    g.axis.setSize(n, Zero); g.wallArea.setSize(n, 0);
+    g.owner.setSize(nf, -1); g.neighbour.setSize(nf, -1);
+    g.Sf.setSize(nf, Zero);
+    plenum_.rho.setSize(nf, 0); plenum_.p.setSize(nf, 0);
+
+    for (scalarField* q : {&m_, &mE_, &aV_, &m1_})
+    {
+        q->setSize(n, 0);
+    }
+    mU_.setSize(n, Zero);
+    for
+    (
+        scalarField* q :
+        {
+            &m0_, &mE0_, &aV0_, &m10_, &Rm_, &RmE_, &RaV_, &Rm1_, &V_, &dVdt_,
+            &rho_, &p_, &c_, &alpha_, &rho1_, &rho2_, &rhoe_, &c2_, &waveSum_
+        }
+    )
+    {
+        q->setSize(n);
+    }
+    mU0_.setSize(n); RmU_.setSize(n); U_.setSize(n, Zero); W_.setSize(n);
+    magSf_.setSize(nf);
+    faces_.setSize(nf, mixture_.twoPhase());
+    F_.setSize(nf, mixture_.twoPhase());
+}
+
+
+void Foam::ductNetwork::setState
+(
+    const label i,
+    const scalar rho,
+    const vector& U,
+    const scalar p,
+    const scalar alpha1
+)
+{
+    const scalar V = geometry_.V0[i];
+    const scalar a = mixture_.twoPhase() ? alpha1 : 1;
+    const scalar rhoe = mixture_.rhoe(a, rho, rho, p);
+    m_[i] = rho*V;
+    mU_[i] = rho*V*U;
+    mE_[i] = (rhoe + 0.5*rho*magSqr(U))*V;
+    aV_[i] = a*V;
+    m1_[i] = a*rho*V;
+    V_ = geometry_.V0;
+    label bad = -1;
+    primitives(bad);
+}
+
+
+bool Foam::ductNetwork::primitives(label& bad)
+{
+    const label n = size();
+    const scalar rhoFloor = 1e-12, alphaEps = 1e-12;
+    bad = -1;
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar V = V_[i];
+        if (!(V > 0) || !(m_[i] > 0) || !std::isfinite(mE_[i]))
+        {
+            if (bad < 0) bad = i;
+            rho_[i] = rho1_[i] = rho2_[i] = 1;
+            rhoe_[i] = 1;
+            U_[i] = Zero;
+            alpha_[i] = 1;
+            continue;
+        }
+        rho_[i] = m_[i]/V;
+        U_[i] = mU_[i]/m_[i];
+        rhoe_[i] = (mE_[i] - 0.5*(mU_[i] & U_[i]))/V;
+        const scalar a = min(max(aV_[i]/V, scalar(0)), scalar(1));
+        const scalar m1 = min(max(m1_[i], scalar(0)), m_[i]);
+        alpha_[i] = a;
+        rho1_[i] = max(m1/(max(a, alphaEps)*V), rhoFloor);
+        rho2_[i] = max((m_[i] - m1)/(max(1 - a, alphaEps)*V), rhoFloor);
+    }
+    if (mixture_.twoPhase())
+    {
+        mixture_.pc2(n, alpha_, rho1_, rho2_, rho_, rhoe_, p_, c2_);
+    }
+    else
+    {
+        mixture_.pc2(n, rho_, rho_, rho_, rho_, rhoe_, p_, c2_);
+    }
+    for (label i = 0; i < n; ++i)
+    {
+        if (!(p_[i] > 0) || !(c2_[i] > 0) || !std::isfinite(p_[i]))
+        {
+            if (bad < 0) bad = i;
+            c_[i] = 0;
+        }
+        else
+        {
+            c_[i] = sqrt(c2_[i]);
+        }
+    }
+    return bad < 0;
+}
+
+
+void Foam::ductNetwork::inflowState
+(
+    const scalar rho0,
+    const scalar p0,
+    const scalar pDuct,
+    scalar& rho,
+    scalar& u,
+    scalar& p
+) const
+{
+    rho = rho0;
+    u = 0;
+    p = p0;
+    if (!(pDuct < p0))
+    {
+        return;
+    }
+    // Along the isentrope in y = ln p: drho/dy = p/c^2, and the kinetic
+    // energy gained is the enthalpy lost, d(u^2/2)/dy = -p/rho; stop where
+    // the flow turns sonic (the mass flux rho u is largest there: choked)
+    const equationOfState& eos = mixture_.eos(0);
+    const scalar y0 = log(p0), y1 = log(pDuct);
+    const label nSteps = max(label(16), label(64*(y0 - y1)));
+    const scalar h = (y1 - y0)/nSteps;
+    // State (rho, k) with k = u^2/2, RK4 in y
+    auto rate = [&](const scalar y, const scalar r, scalar& dr, scalar& dk)
+    {
+        const scalar pp = exp(y);
+        dr = pp/eos.c2(r, pp);
+        dk = -pp/r;
+    };
+    scalar y = y0, r = rho0, k = 0;
+    for (label s = 0; s < nSteps; ++s)
+    {
+        scalar r1, k1, r2, k2, r3, k3, r4, k4;
+        rate(y, r, r1, k1);
+        rate(y + 0.5*h, r + 0.5*h*r1, r2, k2);
+        rate(y + 0.5*h, r + 0.5*h*r2, r3, k3);
+        rate(y + h, r + h*r3, r4, k4);
+        const scalar rEnd = r + h*(r1 + 2*r2 + 2*r3 + r4)/6;
+        const scalar kEnd = k + h*(k1 + 2*k2 + 2*k3 + k4)/6;
+        if (2*kEnd >= eos.c2(rEnd, exp(y + h)))
+        {
+            break;
+        }
+        y += h;
+        r = rEnd;
+        k = kEnd;
+    }
+    rho = r;
+    u = sqrt(max(2*k, scalar(0)));
+    p = exp(y);
+}
+
+
+void Foam::ductNetwork::mouthFlux(const label f)
+{
+    const label P = geometry_.owner[f];
+    const scalar A = magSf_[f];
+    const vector n = geometry_.Sf[f]/A;
+    scalar rhoB, pB;
+    vector UB;
+    scalar rhoEB;
+    if (plenum_.p[f] >= p_[P])
+    {
+        // Into the duct, from the plenum's state at rest
+        scalar uIn;
+        inflowState(plenum_.rho[f], plenum_.p[f], p_[P], rhoB, uIn, pB);
+        UB = -uIn*n;
+        rhoEB =
+            rhoB*mixture_.eos(0).e(rhoB, pB) + 0.5*rhoB*uIn*uIn;
+    }
+    else
+    {
+        // Out of the duct: its density and velocity (not back in), at the
+        // plenum's pressure unless it leaves at sonic speed or above
+        rhoB = rho_[P];
+        const scalar un = max(U_[P] & n, scalar(0));
+        UB = U_[P] + (un - (U_[P] & n))*n;
+        pB = un >= c_[P] ? p_[P] : plenum_.p[f];
+        rhoEB = rhoe_[P] + 0.5*rho_[P]*magSqr(UB);
+    }
+    const scalar uS = (UB & n)*A;
+    F_.rho[f] = rhoB*uS;
+    F_.rhoU[f] = rhoB*uS*UB + pB*A*n;
+    F_.rhoE[f] = (rhoEB + pB)*uS;
+    F_.uS[f] = uS;
+}
+
+
+void Foam::ductNetwork::fluxes()
+{
+    const geometry& g = geometry_;
+    const bool twoPhase = mixture_.twoPhase();
+    blastFaceStates& s = faces_;
+    auto side = [&]
+    (
+        const label i, scalarField& rho, vectorField& U, scalarField& p,
+        scalarField& c, scalarField& E, scalarField* alpha, scalarField* Y1,
+        const label f
+    )
+    {
+        rho[f] = rho_[i];
+        U[f] = U_[i];
+        p[f] = p_[i];
+        c[f] = c_[i];
+        E[f] = rhoe_[i] + 0.5*rho_[i]*magSqr(U_[i]);
+        if (alpha)
+        {
+            (*alpha)[f] = alpha_[i];
+            (*Y1)[f] = alpha_[i]*rho1_[i]/rho_[i];
+        }
+    };
+    forAll(g.owner, f)
+    {
+        const label P = g.owner[f], N = g.neighbour[f];
+        side
+        (
+            P, s.rhoL, s.UL, s.pL, s.cL, s.EL,
+            twoPhase ? &s.alphaL : nullptr, &s.Y1L, f
+        );
+        // A mouth's second side is a copy: its flux is replaced below
+        side
+        (
+            N >= 0 ? N : P, s.rhoR, s.UR, s.pR, s.cR, s.ER,
+            twoPhase ? &s.alphaR : nullptr, &s.Y1R, f
+        );
+    }
+    flux_->fluxes(0, g.owner.size(), g.Sf, magSf_, s, twoPhase, F_);
+    forAll(g.owner, f)
+    {
+        if (g.neighbour[f] < 0)
+        {
+            mouthFlux(f);
+        }
+    }
+}
+
+
+void Foam::ductNetwork::stage(const scalar a, const scalar b, const scalar dt)
+{
+    label bad = -1;
+    if (!primitives(bad))
+    {
+        FatalErrorInFunction
+            << "ductNetwork: control volume " << bad << " of " << size()
+            << " has no physical state (volume " << V_[bad] << ", mass "
+            << m_[bad] << ", pressure " << p_[bad] << ")"
+            << exit(FatalError);
+    }
+    fluxes();
+
+    const geometry& g = geometry_;
+    const bool twoPhase = mixture_.twoPhase();
+    Rm_ = 0; RmU_ = Zero; RmE_ = 0; RaV_ = 0; Rm1_ = 0;
+    forAll(g.owner, f)
+    {
+        const label P = g.owner[f], N = g.neighbour[f];
+        Rm_[P] -= F_.rho[f];
+        RmU_[P] -= F_.rhoU[f];
+        RmE_[P] -= F_.rhoE[f];
+        if (N >= 0)
+        {
+            Rm_[N] += F_.rho[f];
+            RmU_[N] += F_.rhoU[f];
+            RmE_[N] += F_.rhoE[f];
+        }
+        else
+        {
+            mouthMass_ -= b*dt*F_.rho[f];
+            mouthEnergy_ -= b*dt*F_.rhoE[f];
+        }
+        if (twoPhase)
+        {
+            Rm1_[P] -= F_.rhoY1[f];
+            RaV_[P] -= F_.alpha[f] - alpha_[P]*F_.uS[f];
+            if (N >= 0)
+            {
+                Rm1_[N] += F_.rhoY1[f];
+                RaV_[N] += F_.alpha[f] - alpha_[N]*F_.uS[f];
+            }
+        }
+    }
+
+    forAll(m_, i)
+    {
+        // Walls: their pressure on the gas (W outward), the gas's work on
+        // their motion
+        RmU_[i] -= p_[i]*W_[i];
+        RmE_[i] -= p_[i]*dVdt_[i];
+        wallWork_ += b*dt*p_[i]*dVdt_[i];
+        const scalar k =
+            frictionFactor_*mag(U_[i])*g.wallArea[i]/(2*V_[i]);
+
+        m_[i] = a*m0_[i] + (1 - a)*(m_[i] + dt*Rm_[i]);
+        mU_[i] = a*mU0_[i] + (1 - a)*(mU_[i] + dt*RmU_[i]);
+        mE_[i] = a*mE0_[i] + (1 - a)*(mE_[i] + dt*RmE_[i]);
+        if (twoPhase)
+        {
+            RaV_[i] += alpha_[i]*dVdt_[i];
+            aV_[i] = a*aV0_[i] + (1 - a)*(aV_[i] + dt*RaV_[i]);
+            m1_[i] = a*m10_[i] + (1 - a)*(m1_[i] + dt*Rm1_[i]);
+        }
+        V_[i] = a*g.V0[i] + (1 - a)*(V_[i] + dt*dVdt_[i]);
+
+        // Friction (implicit: it slows the flow, never reverses it) and
+        // the duct's walls, which let it flow along the axis only
+        mU_[i] /= 1 + (1 - a)*dt*k;
+        const scalar ax2 = magSqr(g.axis[i]);
+        if (ax2 > 0)
+        {
+            mU_[i] = ((mU_[i] & g.axis[i])/ax2)*g.axis[i];
+        }
+    }
+}
+
+
+void Foam::ductNetwork::advance(const scalar dt)
+{
+    const geometry& g = geometry_;
+    const label n = size();
+    if (g.V0.size() != n || g.V1.size() != n || g.owner.size() != magSf_.size())
+    {
+        FatalErrorInFunction
+            << "ductNetwork: geometry sizes do not match setSize"
+            << exit(FatalError);
+    }
+    W_ = Zero;
+    forAll(g.owner, f)
+    {
+        magSf_[f] = mag(g.Sf[f]);
+        W_[g.owner[f]] -= g.Sf[f];
+        if (g.neighbour[f] >= 0)
+        {
+            W_[g.neighbour[f]] += g.Sf[f];
+        }
+        else if (mixture_.twoPhase())
+        {
+            FatalErrorInFunction
+                << "ductNetwork: mouths (interface " << f << ") need a"
+                << " single-material gas" << exit(FatalError);
+        }
+    }
+    forAll(dVdt_, i)
+    {
+        dVdt_[i] = (g.V1[i] - g.V0[i])/dt;
+    }
+    V_ = g.V0;
+    m0_ = m_; mU0_ = mU_; mE0_ = mE_; aV0_ = aV_; m10_ = m1_;
+    wallWork_ = mouthMass_ = mouthEnergy_ = 0;
+
+    // SSP Runge-Kutta (Shu & Osher): the old state's weight per stage, and
+    // the weight of each stage's residual in the step's result
+    static const scalar a1[] = {0};
+    static const scalar a2[] = {0, 0.5};
+    static const scalar a3[] = {0, 0.75, 1.0/3.0};
+    const scalar* a = RKorder_ == 1 ? a1 : RKorder_ == 2 ? a2 : a3;
+    for (label s = 0; s < RKorder_; ++s)
+    {
+        scalar b = 1 - a[s];
+        for (label k = s + 1; k < RKorder_; ++k)
+        {
+            b *= 1 - a[k];
+        }
+        stage(a[s], b, dt);
+    }
+    label bad = -1;
+    if (!primitives(bad))
+    {
+        FatalErrorInFunction
+            << "ductNetwork: control volume " << bad << " has no physical"
+            << " state after the step (mass " << m_[bad] << ", pressure "
+            << p_[bad] << ")" << exit(FatalError);
+    }
+}
+
+
+Foam::scalar Foam::ductNetwork::maxDeltaT(const scalar Co) const
+{
+    const geometry& g = geometry_;
+    waveSum_ = 0;
+    forAll(g.owner, f)
+    {
+        const scalar A = mag(g.Sf[f]);
+        if (A <= 0) continue;
+        const vector n = g.Sf[f]/A;
+        const label P = g.owner[f], N = g.neighbour[f];
+        waveSum_[P] += (mag(U_[P] & n) + c_[P])*A;
+        if (N >= 0)
+        {
+            waveSum_[N] += (mag(U_[N] & n) + c_[N])*A;
+        }
+    }
+    scalar dt = GREAT;
+    forAll(waveSum_, i)
+    {
+        if (waveSum_[i] > 0)
+        {
+            dt = min(dt, Co*min(g.V0[i], g.V1[i])/waveSum_[i]);
+        }
+    }
+    return dt;
+}
+
+
+Foam::scalar Foam::ductNetwork::mass() const
+{
+    return sum(m_);
+}
+
+
+Foam::scalar Foam::ductNetwork::energy() const
+{
+    return sum(mE_);
+}
+
+
+// ************************************************************************* //
