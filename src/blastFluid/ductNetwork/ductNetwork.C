@@ -62,7 +62,8 @@ void Foam::ductNetwork::setSize(const label nVolumes, const label nInterfaces)
         scalarField* q :
         {
             &m0_, &mE0_, &aV0_, &m10_, &Rm_, &RmE_, &RaV_, &Rm1_, &V_, &dVdt_,
-            &rho_, &p_, &c_, &alpha_, &rho1_, &rho2_, &rhoe_, &c2_, &waveSum_
+            &rho_, &p_, &c_, &alpha_, &rho1_, &rho2_, &rhoe_, &c2_, &waveSum_,
+            &wallWorkOf_, &pMean_
         }
     )
     {
@@ -339,6 +340,8 @@ void Foam::ductNetwork::stage(const scalar a, const scalar b, const scalar dt)
         RmU_[i] -= p_[i]*W_[i];
         RmE_[i] -= p_[i]*dVdt_[i];
         wallWork_ += b*dt*p_[i]*dVdt_[i];
+        wallWorkOf_[i] += b*dt*p_[i]*dVdt_[i];
+        pMean_[i] += b*p_[i];
         const scalar k =
             frictionFactor_*mag(U_[i])*g.wallArea[i]/(2*V_[i]);
 
@@ -398,6 +401,8 @@ void Foam::ductNetwork::advance(const scalar dt)
     V_ = g.V0;
     m0_ = m_; mU0_ = mU_; mE0_ = mE_; aV0_ = aV_; m10_ = m1_;
     wallWork_ = mouthMass_ = mouthEnergy_ = 0;
+    wallWorkOf_ = 0;
+    pMean_ = 0;
 
     // SSP Runge-Kutta (Shu & Osher): the old state's weight per stage, and
     // the weight of each stage's residual in the step's result
@@ -450,6 +455,36 @@ Foam::scalar Foam::ductNetwork::maxDeltaT(const scalar Co) const
         }
     }
     return dt;
+}
+
+
+void Foam::ductNetwork::addEnergy(const scalarField& dE)
+{
+    mE_ += dE;
+    label bad = -1;
+    if (!primitives(bad))
+    {
+        FatalErrorInFunction
+            << "ductNetwork: control volume " << bad << " has no physical"
+            << " state after adding " << dE[bad] << " J to it"
+            << exit(FatalError);
+    }
+}
+
+
+Foam::ductNetwork::content Foam::ductNetwork::contentOf(const label i) const
+{
+    return {m_[i], mE_[i], aV_[i], m1_[i], mU_[i]};
+}
+
+
+void Foam::ductNetwork::setContent(const label i, const content& c)
+{
+    m_[i] = c.m;
+    mE_[i] = c.mE;
+    aV_[i] = c.aV;
+    m1_[i] = c.m1;
+    mU_[i] = c.mU;
 }
 
 
