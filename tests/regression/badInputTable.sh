@@ -176,30 +176,31 @@ sed -i 's/centre (0.07 0.1)/centre (0.19 0.1)/' system/femdemMeshDict
 femdemMesh > log.femdemMesh 2>&1
 check solidOutsideFluid "constant/solidMesh" "outside the fluid mesh" jwlIbFoam
 
-prep negativeBeta box
-setEntry constant/immersedBodyProperties beta -1
-check negativeBeta immersedBodyProperties "'beta'" jwlIbFoam
+# The first-generation coupling (method fluidFraction) was removed: its
+# method and its entries stop naming the entry and saying so
+prep removedMethodFluidFraction box
+sed -i 's/^method .*/method fluidFraction;/' constant/immersedBodyProperties
+check removedMethodFluidFraction immersedBodyProperties "'method fluidFraction': the first-generation coupling" jwlIbFoam
 
-prep minFluidFractionHalf box
-setEntry constant/immersedBodyProperties minFluidFraction 0.5
-check minFluidFractionHalf immersedBodyProperties "'minFluidFraction'" jwlIbFoam
+prep removedBeta box
+echo 'beta 1;' >> constant/immersedBodyProperties
+check removedBeta immersedBodyProperties "'beta' was removed with the first-generation coupling" jwlIbFoam
 
-prep negativeMinFluidFraction box
-setEntry constant/immersedBodyProperties minFluidFraction -0.01
-check negativeMinFluidFraction immersedBodyProperties "'minFluidFraction'" jwlIbFoam
+prep removedMinFluidFraction box
+echo 'minFluidFraction 0.02;' >> constant/immersedBodyProperties
+check removedMinFluidFraction immersedBodyProperties "'minFluidFraction' was removed with the first-generation coupling" jwlIbFoam
 
-prep misspeltCrackPressure box
-sed -i 's/^crackPressure /crackPresure /' constant/immersedBodyProperties
-check misspeltCrackPressure immersedBodyProperties "'crackPresure'" jwlIbFoam
+prep removedCrackPressure box
+echo 'crackPressure false;' >> constant/immersedBodyProperties
+check removedCrackPressure immersedBodyProperties "'crackPressure' was removed with the first-generation coupling" jwlIbFoam
+
+prep misspeltCrackVenting box
+echo 'crackVentng false;' >> constant/immersedBodyProperties
+check misspeltCrackVenting immersedBodyProperties "'crackVentng'" jwlIbFoam
 
 prep unknownCouplingMethod box
-echo 'method cutcell;' >> constant/immersedBodyProperties
-check unknownCouplingMethod immersedBodyProperties "cutcell" jwlIbFoam
-
-prep cutCellWithCrackPressure box
-sed -i 's/^crackPressure .*/crackPressure true;/' constant/immersedBodyProperties
-echo 'method cutCell;' >> constant/immersedBodyProperties
-check cutCellWithCrackPressure immersedBodyProperties "'crackPressure'" jwlIbFoam
+sed -i 's/^method .*/method cutcell;/' constant/immersedBodyProperties
+check unknownCouplingMethod immersedBodyProperties "'cutcell'" jwlIbFoam
 
 prep coupledMissingMaterial box
 sed -i 's/^    rock$/    granite/' constant/femdemProperties

@@ -28,11 +28,9 @@ compare=$data/compareCases.py
 export PYTHONPATH=$data
 fail=0
 
-newCase()   # name: the closed box with cut cells
+newCase()   # name: the closed box (cut cells)
 {
     rm -rf "$1" && cp -r "$data/closedBoxSolid" "$1"
-    sed -i 's/^beta .*/method cutCell;/; /minFluidFraction/d; /crackPressure/d' \
-        "$1/constant/immersedBodyProperties"
     (cd "$1" && blockMesh > log.blockMesh 2>&1 && femdemMesh > log.femdemMesh 2>&1) \
         || { echo ">> $1: meshing failed <-- FAIL"; exit 1; }
 }

@@ -224,8 +224,6 @@ sliver()
 {
     local c=$1
     rm -rf $c && cp -r "$data/closedBoxSolid" $c
-    sed -i 's/^beta .*/method cutCell;/; /minFluidFraction/d; /crackPressure/d' \
-        $c/constant/immersedBodyProperties
     cat > $c/system/femdemMeshDict <<'DICT'
 FoamFile { version 2.0; format ascii; class dictionary; object femdemMeshDict; }
 // A block 0.04 m x 0.04 m whose bottom and top faces lie 1e-10 cell widths

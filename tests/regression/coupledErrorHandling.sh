@@ -3,13 +3,14 @@
 # stops cleanly. Case: tests/regression/coupledData/closedBoxSolid (free
 # rock disc thrown through air at rest in a periodic box) on 20x20 cells,
 # 38 triangles, adjustTimeStep no.
-#  1. divergence: deltaT 2e-5 (gas Courant number about 1.4; the solid
-#     sub-cycles with its own stable step) written every 5 steps: the run
-#     stops at step 15 (t = 3e-4, a write time) with exit status 1 and a
-#     message naming the time, the cell and its centre; 3e-4 is not
-#     written; the last written time 2e-4 holds the gas fields,
+#  1. divergence: deltaT 5e-5 (gas Courant number about 3.4; the cut-cell
+#     step still runs at 1.4, deltaT 2e-5; the solid sub-cycles with its
+#     own stable step) written every 5 steps: the run stops at step 11
+#     (t = 5.5e-4) with exit status 1 and a message naming the time, the
+#     cell and its centre; 5.5e-4 is not written; the last written time
+#     5e-4 holds the gas fields,
 #     alpha.solid, fluidFraction and uniform/femdemState, and a restart
-#     from it (adjustTimeStep yes) reads gas and solid and runs to 2.2e-4.
+#     from it (adjustTimeStep yes) reads gas and solid and runs to 6e-4.
 #     alpha.solid or U.solid of that time with other dimensions (a length):
 #     a FatalIOError naming the file and the entry 'dimensions'.
 #  2. SIGTERM and SIGINT during a run (deltaT 2e-6, no write time before
@@ -44,7 +45,7 @@ sed -i 's/^targetSize .*/targetSize 0.02;/; s/nSegments 48/nSegments 12/' base/s
 
 # ------------------------------------------------------------- divergence
 rm -rf diverge && cp -r base diverge
-setEntry diverge deltaT 2e-5
+setEntry diverge deltaT 5e-5
 setEntry diverge endTime 1e-2
 setEntry diverge writeInterval 5
 (cd diverge && jwlIbFoam > log.jwlIbFoam 2>&1)
@@ -64,11 +65,14 @@ last=$(timeDirs diverge | awk '{print $NF}')
 complete diverge/$last || fail "divergence: $last lacks one of: $stateFiles"
 echo ">> no time directory for the failed time $t; last written $last complete ($stateFiles)"
 setEntry diverge adjustTimeStep yes
-setEntry diverge endTime $(/usr/bin/python3 -c "print(f\"{float('$last') + 2e-5:.6g}\")")
+# (two failed steps on: Time stops within half a step of endTime, and the
+# first step restarts with the deltaT of the last)
+setEntry diverge endTime $(/usr/bin/python3 -c "print(f\"{float('$last') + 1e-4:.6g}\")")
 (cd diverge && jwlIbFoam > log.restart 2>&1) || fail "divergence: restart from $last failed"
 grep -q "^blastFluidSolver: restart from the conservative state of time $last" diverge/log.restart \
     && grep -q "^Solid restarted from \"$last/uniform/femdemState\"" diverge/log.restart \
     || fail "divergence: the restart did not read the gas and the solid of $last"
+[ "$(grep -c '^Time = ' diverge/log.restart)" -gt 0 ] || fail "divergence: the restart from $last ran no step"
 echo ">> restart from $last (adjustTimeStep yes) read gas and solid and ran" \
      "$(grep -c '^Time = ' diverge/log.restart) steps to $(grep '^Time = ' diverge/log.restart | tail -1 | awk '{print $3}')"
 

@@ -16,24 +16,21 @@ Description
     (JWL) and air (or any one or two Mie-Grueneisen materials in pressure
     equilibrium) coupled to an immersed, fracturing FEMDEM solid.
 
-    Per time step (staggered, see doc/theory-coupling.md):
-      1. project the FEMDEM triangles onto the fluid cells: alpha.solid,
-         U.solid; the gas follows the new fluid fraction;
-      2. Courant-controlled dt (controlDict: adjustTimeStep, maxCo,
-         maxDeltaT); SSP Runge-Kutta stages of the finite-volume residual
-         (HLLC or central-upwind fluxes through the open part of each face,
-         solid surface pressure, optional Q-scheme), then the implicit
-         absorption towards the solid velocity;
-      3. forces on the solid nodes: the momentum the gas gave to the solid
-         (total momentum conserved), optionally (crackPressure) the gas
-         pressure in opened sub-cell cracks;
-      4. FEMDEM sub-cycled over dt with its own stable step.
-    With immersedBodyProperties 'method cutCell' (exact moving-boundary
-    finite volumes): 1. the step's geometry (fluid fractions at both ends,
-    time-averaged face apertures) from the solid moved on by dt v; 2. the
-    gas step with moving-wall fluxes and small-cell redistribution; 3. the
-    wall impulses on the solid's exposed edges; 4. FEMDEM sub-cycles, then
-    the gas pays exactly the work of those forces (cutCellSolidStep.H).
+    Per time step (exact moving-boundary finite volumes, cut cells; see
+    doc/theory-coupling.md):
+      1. Courant-controlled dt (controlDict: adjustTimeStep, maxCo,
+         maxDeltaT);
+      2. the step's geometry from the solid now and moved on by dt v: fluid
+         fractions at both ends, time-averaged face apertures
+         (immersedBodyCoupling::startStep), given to the gas;
+      3. SSP Runge-Kutta stages of the finite-volume residual (HLLC or
+         central-upwind fluxes through the open part of each face,
+         moving-wall terms, optional Q-scheme) with small-cell
+         redistribution;
+      4. the wall impulses on the solid's exposed edges (exactly the
+         reaction), FEMDEM sub-cycled over dt with its own stable step,
+         then the gas pays exactly the work of those forces
+         (cutCellSolidStep.H): gas + solid energy is conserved.
     A case without constant/femdemProperties runs as a pure gas solver.
 
     Inputs: constant/thermophysicalProperties (blastMixture),
@@ -151,13 +148,6 @@ int main(int argc, char *argv[])
     #include "createMesh.H"
     #include "createFields.H"
     #include "createSolid.H"
-    const bool cutCells = hasSolid && fluid.cutCells();
-    if (cutCells)
-    {
-        // The gas pays the work of its wall forces over the displacement
-        // the solid's budget integrates them over
-        solidPtr->trackWorkDisplacement();
-    }
     #include "createTimeControls.H"
     #include "checkTimeControls.H"
     #include "createDiagnostics.H"
@@ -171,8 +161,9 @@ int main(int argc, char *argv[])
         runTime.controlDict().getOrDefault<scalar>("progressInterval", 5)
     );
 
-    // Wall-clock time of the parts of a step (printed at the end):
-    // the coupling is project + updateFluidFraction + solidForces
+    // Wall-clock time of the parts of a step (printed at the end): the
+    // coupling is startStep + setFluidFraction (and setEmbeddedBoundary)
+    // + wallForces (and wallWork)
     double tGas = 0, tProject = 0, tFraction = 0, tForces = 0, tSolid = 0;
 
     Info<< "\nStarting time loop\n" << endl;
@@ -180,23 +171,12 @@ int main(int argc, char *argv[])
     while (runTime.run())
     {
         #include "readTimeControls.H"
-
-        if (hasSolid && !cutCells)
-        {
-            const clockValue t0(clockValue::now());
-            couplingPtr->project(solidPtr->x(), solidPtr->v());
-            const clockValue t1(clockValue::now());
-            fluid.updateFluidFraction();
-            tProject += t1 - t0;
-            tFraction += t1.elapsed();
-        }
-
         #include "setDeltaT.H"
 
         ++runTime;
         const scalar dt = runTime.deltaTValue();
 
-        if (cutCells)
+        if (hasSolid)
         {
             // The step's geometry: the solid now and moved on by dt v
             const clockValue t0(clockValue::now());
@@ -224,25 +204,9 @@ int main(int argc, char *argv[])
         }
 
         label nSubSteps = 0;
-        if (cutCells)
+        if (hasSolid)
         {
             #include "cutCellSolidStep.H"
-        }
-        else if (hasSolid)
-        {
-            femdemSolid& solid = solidPtr();
-            const clockValue t0(clockValue::now());
-            couplingPtr->solidForces
-            (
-                solid.x(), solid.topology(), solid.jointBroken(), fluid.p(),
-                fluid.fluidFraction(), fluid.solidImpulse(), dt,
-                solidNodeForces
-            );
-            solid.externalForce() = solidNodeForces;
-            const clockValue t1(clockValue::now());
-            tForces += t1 - t0;
-            nSubSteps = solid.advance(dt);
-            tSolid += t1.elapsed();
         }
 
         #include "writeDiagnostics.H"
@@ -260,9 +224,9 @@ int main(int argc, char *argv[])
 
     const double tCoupling = tProject + tFraction + tForces;
     Info<< "Timing: gas " << tGas << " s, coupling " << tCoupling << " s ("
-        << (tGas > 0 ? 100*tCoupling/tGas : 0) << " % of gas; project "
-        << tProject << " s, updateFluidFraction " << tFraction
-        << " s, solidForces " << tForces << " s), solid " << tSolid << " s"
+        << (tGas > 0 ? 100*tCoupling/tGas : 0) << " % of gas; startStep "
+        << tProject << " s, setFluidFraction " << tFraction
+        << " s, wallForces " << tForces << " s), solid " << tSolid << " s"
         << nl;
     Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
         << "  ClockTime = " << runTime.elapsedClockTime() << " s"

@@ -1191,15 +1191,7 @@ bool Foam::blastFluidSolver::stage(const scalar a, const scalar dt)
     {
         return false;
     }
-    if (alphaSolidPtr_)
-    {
-        scaleFluxes(faceFluidFraction_);
-    }
     assembleResidual();
-    if (alphaSolidPtr_)
-    {
-        addSolidForcing(a, dt);
-    }
 
     const scalar b = 1 - a;
     scalarField& rho = rho_.primitiveFieldRef();
@@ -1330,10 +1322,6 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     ),
     nRetries_(0),
     anyLowOrder_(false),
-    alphaSolidPtr_(nullptr),
-    UsolidPtr_(nullptr),
-    minFluidFraction_(0),
-    absorptionBeta_(0),
     cutCells_(false),
     lostMass_(0),
     lostEnergy_(0),
@@ -1640,10 +1628,6 @@ void Foam::blastFluidSolver::advance(const scalar dt)
     const label maxAttempts = 4;
     for (label attempt = 0; attempt < maxAttempts; ++attempt)
     {
-        if (alphaSolidPtr_)
-        {
-            solidImpulse_ = Zero;
-        }
         bool ok = true;
         for (label s = 0; s < RKorder_ && ok; ++s)
         {
@@ -1657,10 +1641,6 @@ void Foam::blastFluidSolver::advance(const scalar dt)
                     << " needed first-order reconstruction in "
                     << returnReduce(label(sum(lowOrder_.primitiveField())), sumOp<label>())
                     << " cells" << endl;
-            }
-            if (alphaSolidPtr_)
-            {
-                absorbSolidVelocity(dt);
             }
             return;
         }
@@ -1698,7 +1678,7 @@ Foam::vector Foam::blastFluidSolver::totalMomentum() const
 
 Foam::scalar Foam::blastFluidSolver::maxPressure() const
 {
-    // Cells covered by the solid keep a frozen state: not gas
+    // Cells without gas (cut cells) keep a frozen state: not gas
     const scalarField& p = p_.primitiveField();
     return gasCellsMax
     (

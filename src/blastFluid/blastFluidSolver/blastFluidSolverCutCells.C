@@ -55,9 +55,98 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "blastFluidSolver.H"
+#include "caseChecks.H"
 #include "calculatedFvPatchFields.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Type>
+void Foam::blastFluidSolver::coupledNeighbourValues
+(
+    const GeometricField<Type, fvPatchField, volMesh>& field,
+    Field<Type>& values
+) const
+{
+    values.setSize(nFaces_ - nInternal_);
+    values = Zero;
+    forAll(patchKind_, patchi)
+    {
+        if (patchKind_[patchi] != COUPLED) continue;
+        const tmp<Field<Type>> tnbr =
+            field.boundaryField()[patchi].patchNeighbourField();
+        const Field<Type>& nbr = tnbr();
+        forAll(nbr, j)
+        {
+            values[patchStart_[patchi] - nInternal_ + j] = nbr[j];
+        }
+    }
+}
+
+
+void Foam::blastFluidSolver::scaleFluxes(const scalarField& phif)
+{
+    for (label f = 0; f < nFaces_; ++f)
+    {
+        F_.rho[f] *= phif[f];
+        F_.rhoU[f] *= phif[f];
+        F_.rhoE[f] *= phif[f];
+    }
+    if (twoPhase_)
+    {
+        for (label f = 0; f < nFaces_; ++f)
+        {
+            F_.rhoY1[f] *= phif[f];
+            F_.alpha[f] *= phif[f];
+            F_.uS[f] *= phif[f];
+        }
+    }
+}
+
+
+bool Foam::blastFluidSolver::readFluidFraction()
+{
+    IOobject io
+    (
+        "fluidFraction",
+        mesh_.time().timeName(),
+        mesh_,
+        IOobject::READ_IF_PRESENT,
+        IOobject::AUTO_WRITE
+    );
+    if (!io.typeHeaderOk<volScalarField>(true))
+    {
+        fluidFractionPtr_.reset
+        (
+            new volScalarField
+            (
+                io,
+                mesh_,
+                dimensionedScalar("one", dimless, 1),
+                calculatedFvPatchScalarField::typeName
+            )
+        );
+        return false;
+    }
+    caseChecks::checkFieldFile(io);
+    fluidFractionPtr_.reset(new volScalarField(io, mesh_));
+    const scalarField& phi = fluidFractionPtr_->primitiveField();
+    forAll(phi, i)
+    {
+        if (!(phi[i] >= 0 && phi[i] <= 1))
+        {
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__,
+                fluidFractionPtr_->objectPath(), 0, 0
+            )
+                << "entry 'internalField': fluid fraction " << phi[i]
+                << " in cell " << i << " is outside [0, 1]"
+                << exit(FatalIOError);
+        }
+    }
+    return true;
+}
+
 
 void Foam::blastFluidSolver::contentFromState
 (
@@ -613,7 +702,7 @@ void Foam::blastFluidSolver::addWallTerms(const scalar a, const scalar dt)
     // receives are theta times as large, so the reaction stays exact
     const scalarField& p = p_.primitiveField();
     const scalarField& V = mesh_.V();
-    solidImpulse_ *= b;
+    wallImpulse_ *= b;
     wallWork_ *= b;
     wallPressureImpulse_ *= b;
     forAll(V, i)
@@ -639,7 +728,7 @@ void Foam::blastFluidSolver::addWallTerms(const scalar a, const scalar dt)
         const vector force = pw*wallVector_[i];
         dRhoU_[i] -= force/V[i];
         dRhoE_[i] -= theta*work/(dt*V[i]);
-        solidImpulse_[i] += b*dt*force;
+        wallImpulse_[i] += b*dt*force;
         wallWork_[i] += b*theta*work;
         wallPressureImpulse_[i] += b*dt*pw;
     }
@@ -772,7 +861,7 @@ void Foam::blastFluidSolver::advanceCutCells(const scalar dt)
     const label maxAttempts = 4;
     for (label attempt = 0; attempt < maxAttempts; ++attempt)
     {
-        solidImpulse_ = Zero;
+        wallImpulse_ = Zero;
         wallWork_ = 0;
         wallPressureImpulse_ = 0;
         bool ok = true;
@@ -836,7 +925,7 @@ void Foam::blastFluidSolver::enableCutCells(const scalarField& phi)
     sweptVolume_.setSize(mesh_.nCells(), 0);
     wallWork_.setSize(mesh_.nCells(), 0);
     wallPressureImpulse_.setSize(mesh_.nCells(), 0);
-    solidImpulse_.setSize(mesh_.nCells(), Zero);
+    wallImpulse_.setSize(mesh_.nCells(), Zero);
     lostMass_ = 0;
     lostEnergy_ = 0;
     primitivesCurrent_ = false;
@@ -1110,6 +1199,16 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
     // The written state is the corrected one, checked now (a bad state
     // stops the run before it is written)
     primitivesFromConservative(true);
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::blastFluidSolver::fluidFraction() const
+{
+    if (fluidFractionPtr_.valid())
+    {
+        return fluidFractionPtr_->primitiveField();
+    }
+    return tmp<scalarField>::New(mesh_.nCells(), 1);
 }
 
 

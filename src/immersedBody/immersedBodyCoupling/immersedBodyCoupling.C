@@ -11,14 +11,67 @@ License
 #include "zeroGradientFvPatchFields.H"
 #include "syncTools.H"
 
-// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
-const Foam::Enum<Foam::immersedBodyCoupling::method>
-Foam::immersedBodyCoupling::methodNames
-({
-    {method::cutCell, "cutCell"},
-    {method::fluidFraction, "fluidFraction"},
-});
+namespace
+{
+    //- Stop on a case written for the first-generation coupling (method
+    //  fluidFraction, removed): 'method' other than cutCell, and the entries
+    //  only that method read, each with what to do instead
+    void checkRemovedEntries(const Foam::dictionary& dict)
+    {
+        using namespace Foam;
+        const word method(dict.getOrDefault<word>("method", "cutCell"));
+        if (method == "fluidFraction")
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'method fluidFraction': the first-generation"
+                << " coupling (fluid fractions with apertures min(phi_P,"
+                << " phi_N), the gas-transfer step, absorption) was removed;"
+                << " delete the entry or write 'method cutCell;' (exact cut"
+                << " cells, the only method: doc/theory-coupling.md)"
+                << exit(FatalIOError);
+        }
+        if (method != "cutCell")
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'method' is '" << method << "': the only coupling"
+                << " method is cutCell (the entry may be left out)"
+                << exit(FatalIOError);
+        }
+        // Entry and what replaces it
+        static const char* removed[][2] =
+        {
+            {
+                "minFluidFraction",
+                "small cells need no threshold, they are merged with their"
+                " neighbours (weighted state redistribution); delete the"
+                " entry"
+            },
+            {
+                "beta",
+                "the absorption towards the solid velocity is gone, the"
+                " walls are moving boundaries of the gas; delete the entry"
+            },
+            {
+                "crackPressure",
+                "the sub-cell crack pressure did work the gas did not pay"
+                " for; delete the entry (cracks open to the gas from"
+                " crackOpening cells wide: crackOpening, crackVenting)"
+            }
+        };
+        for (const auto& r : removed)
+        {
+            if (dict.found(r[0]))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "entry '" << r[0] << "' was removed with the"
+                    << " first-generation coupling (method fluidFraction): "
+                    << r[1] << exit(FatalIOError);
+            }
+        }
+    }
+}
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -34,13 +87,6 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
     dict_(dict),
     projection_(mesh),
     depth_(returnReduce(mesh.bounds().span().z(), maxOp<scalar>())),
-    method_
-    (
-        methodNames.getOrDefault("method", dict, method::fluidFraction)
-    ),
-    beta_(dict.getOrDefault<scalar>("beta", 1)),
-    minFluidFraction_(dict.getOrDefault<scalar>("minFluidFraction", 0.02)),
-    crackPressure_(dict.getOrDefault<bool>("crackPressure", false)),
     aperture_
     (
         IOobject
@@ -70,17 +116,14 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
         dimensionedVector(dimVelocity, Zero),
         zeroGradientFvPatchVectorField::typeName
     ),
-    cellForce_(mesh.nCells(), Zero),
     triangles_(nTriangles),
     alphaSolidRead_(alphaSolid_.headerOk())
 {
-    // A misspelt optional entry would silently take its default
-    const wordList valid
-    ({
-        "method", "beta", "minFluidFraction", "crackPressure",
-        "crackOpening", "crackVenting"
-    });
+    // A misspelt optional entry would silently take its default; the
+    // entries of the removed first generation are named as such
+    const wordList valid({"method", "crackOpening", "crackVenting"});
     caseChecks::checkInput(dict);
+    checkRemovedEntries(dict);
     // As the gas fields: a file with other dimensions is a wrong case
     // (U.solid is recomputed, not read, but a restart time holds it)
     caseChecks::checkDimensions(alphaSolid_, dimless);
@@ -95,18 +138,6 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
                 << exit(FatalIOError);
         }
     }
-    if (!(beta_ > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "entry 'beta' must be positive, not " << beta_
-            << exit(FatalIOError);
-    }
-    if (!(minFluidFraction_ > 0 && minFluidFraction_ < 0.5))
-    {
-        FatalIOErrorInFunction(dict)
-            << "entry 'minFluidFraction' must lie in (0, 0.5), not "
-            << minFluidFraction_ << exit(FatalIOError);
-    }
     if (!(depth_ > 0))
     {
         FatalErrorInFunction
@@ -117,19 +148,8 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
     {
         triangles_[t] = FixedList<label, 3>({3*t, 3*t + 1, 3*t + 2});
     }
-    if (method_ == method::cutCell)
-    {
-        if (crackPressure_)
-        {
-            FatalIOErrorInFunction(dict)
-                << "entry 'crackPressure': the cutCell method has no"
-                << " sub-cell crack pressure (it would do work the gas does"
-                << " not pay for); use method fluidFraction for it"
-                << exit(FatalIOError);
-        }
-        apertures_.reset(new faceApertures(mesh));
-        gasView_.reset(new gasView(mesh, dict));
-    }
+    apertures_.reset(new faceApertures(mesh));
+    gasView_.reset(new gasView(mesh, dict));
 }
 
 
@@ -160,52 +180,6 @@ void Foam::immersedBodyCoupling::copyToFields()
     }
     alphaSolid_.correctBoundaryConditions();
     Usolid_.correctBoundaryConditions();
-}
-
-
-void Foam::immersedBodyCoupling::solidForces
-(
-    const UList<vector2D>& nodePositions,
-    const jointTopology& topology,
-    const UList<bool>& jointBroken,
-    const volScalarField& p,
-    const scalarField& fluidFraction,
-    const vectorField& solidImpulse,
-    const scalar dt,
-    List<vector2D>& nodeForces
-)
-{
-    // Momentum per unit time and unit depth
-    const scalar scale = 1/(dt*depth_);
-    forAll(cellForce_, celli)
-    {
-        cellForce_[celli] = vector2D
-        (
-            scale*solidImpulse[celli].x(), scale*solidImpulse[celli].y()
-        );
-    }
-    nodeForces.setSize(nodePositions.size());
-    nodeForces = Zero;
-    projection_.distributeToPoints
-    (
-        cellForce_, alphaWork_, nodePositions, triangles_, nodeForces
-    );
-
-    if (crackPressure_)
-    {
-        addCrackPressure
-        (
-            nodePositions, topology, jointBroken, p, fluidFraction,
-            nodeForces
-        );
-    }
-
-    if (Pstream::parRun())
-    {
-        // The same solid on every processor: sum the parts
-        Pstream::listCombineGather(nodeForces, plusEqOp<vector2D>());
-        Pstream::listCombineScatter(nodeForces);
-    }
 }
 
 
@@ -538,58 +512,6 @@ void Foam::immersedBodyCoupling::wallWork
         }
     );
     cellWork *= depth_;
-}
-
-
-void Foam::immersedBodyCoupling::addCrackPressure
-(
-    const UList<vector2D>& nodePositions,
-    const jointTopology& topology,
-    const UList<bool>& jointBroken,
-    const volScalarField& p,
-    const scalarField& fluidFraction,
-    List<vector2D>& nodeForces
-) const
-{
-    const List<jointNodeList>& jointNodes = topology.jointNodes();
-    forAll(jointNodes, j)
-    {
-        if (!jointBroken[j])
-        {
-            continue;
-        }
-        const jointNodeList& n = jointNodes[j];
-        const vector2D& p0 = nodePositions[n[0]];
-        const vector2D& p1 = nodePositions[n[1]];
-        const vector2D mid = 0.5*(p0 + p1);
-        const vector2D gapMid =
-            0.5*(nodePositions[n[2]] + nodePositions[n[3]]) - mid;
-        const vector2D d = p1 - p0;
-        // Unit normal from A into B times the face length
-        const vector2D nL(d.y(), -d.x());
-        if ((gapMid & nL) <= 0)
-        {
-            continue;   // closed crack: no gas between the faces
-        }
-        // Only a crack narrower than the fluid cells: once its faces lie in
-        // different cells, the fluid mesh sees the gap and its wall faces
-        // already push each side (counting them again would create energy)
-        const label celli = projection_.findCell(mid);
-        if
-        (
-            celli < 0 || fluidFraction[celli] <= 0
-         || projection_.findCell(mid + gapMid) != celli
-        )
-        {
-            continue;
-        }
-        // Gas pushes A along -n and B along +n: an internal pair
-        const vector2D f = 0.5*p[celli]*nL;
-        nodeForces[n[0]] -= f;
-        nodeForces[n[1]] -= f;
-        nodeForces[n[2]] += f;
-        nodeForces[n[3]] += f;
-    }
 }
 
 
