@@ -68,7 +68,6 @@ Description
 #include "OFstream.H"
 #include "IOmanip.H"
 #include "clockValue.H"
-#include <malloc.h>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -126,11 +125,6 @@ int main(int argc, char *argv[])
         "Rock blasting: JWL detonation products and air coupled to an"
         " immersed, fracturing FEMDEM solid"
     );
-
-    // Large temporaries (fields of every step) stay on the heap instead of
-    // being mapped and unmapped, with a page fault per page, every step
-    mallopt(M_MMAP_THRESHOLD, 32*1024*1024);
-    mallopt(M_TRIM_THRESHOLD, 256*1024*1024);
 
     #include "postProcess.H"
 
