@@ -50,6 +50,7 @@ void Foam::ductNetwork::setSize(const label nVolumes, const label nInterfaces)
     g.axis.setSize(n, Zero); g.wallArea.setSize(n, 0);
     g.owner.setSize(nf, -1); g.neighbour.setSize(nf, -1);
     g.Sf.setSize(nf, Zero);
+    g.wallWork.clear();
     plenum_.rho.setSize(nf, 0); plenum_.p.setSize(nf, 0);
 
     for (scalarField* q : {&m_, &mE_, &aV_, &m1_})
@@ -338,9 +339,11 @@ void Foam::ductNetwork::stage(const scalar a, const scalar b, const scalar dt)
         // Walls: their pressure on the gas (W outward), the gas's work on
         // their motion
         RmU_[i] -= p_[i]*W_[i];
-        RmE_[i] -= p_[i]*dVdt_[i];
-        wallWork_ += b*dt*p_[i]*dVdt_[i];
-        wallWorkOf_[i] += b*dt*p_[i]*dVdt_[i];
+        const scalar wall =
+            g.wallWork.size() ? g.wallWork[i] : dt*p_[i]*dVdt_[i];
+        RmE_[i] -= wall/dt;
+        wallWork_ += b*wall;
+        wallWorkOf_[i] += b*wall;
         pMean_[i] += b*p_[i];
         const scalar k =
             frictionFactor_*mag(U_[i])*g.wallArea[i]/(2*V_[i]);
@@ -372,7 +375,11 @@ void Foam::ductNetwork::advance(const scalar dt)
 {
     const geometry& g = geometry_;
     const label n = size();
-    if (g.V0.size() != n || g.V1.size() != n || g.owner.size() != magSf_.size())
+    if
+    (
+        g.V0.size() != n || g.V1.size() != n || g.owner.size() != magSf_.size()
+     || (g.wallWork.size() && g.wallWork.size() != n)
+    )
     {
         FatalErrorInFunction
             << "ductNetwork: geometry sizes do not match setSize"

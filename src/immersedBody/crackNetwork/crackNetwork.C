@@ -296,28 +296,162 @@ void Foam::crackNetwork::fill
 }
 
 
-void Foam::crackNetwork::advance
+void Foam::crackNetwork::beginStep
 (
-    const UList<vector2D>& x0,
-    const UList<vector2D>& x1,
+    const UList<vector2D>& x,
+    const UList<vector2D>& d
+)
+{
+    const label n = cvJoint_.size();
+    V0_.setSize(n); p0_.setSize(n); Gamma_.setSize(n); open0_.setSize(2*n);
+    content0_.setSize(n); eInt0_.setSize(n);
+    faceForce_.setSize(n); work_.setSize(n); dLast_.setSize(n);
+    const ductNetwork& g = gas_;
+    forAll(cvJoint_, i)
+    {
+        scalar L;
+        vector2D nrm;
+        jointGeometry
+        (
+            cvJoint_[i], x, V0_[i], L, nrm, open0_[2*i], open0_[2*i + 1]
+        );
+        p0_[i] = g.p()[i];
+        Gamma_[i] = g.rho()[i]*sqr(g.c()[i])/g.p()[i];
+        const ductNetwork::content c = g.contentOf(i);
+        content0_[i] = c;
+        eInt0_[i] = c.mE - 0.5*magSqr(c.mU)/c.m;
+        faceForce_[i] = Zero;
+        work_[i] = 0;
+        const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
+        for (label k = 0; k < 4; ++k) dLast_[i][k] = d[jn[k]];
+    }
+}
+
+
+Foam::scalar Foam::crackNetwork::gapPressure
+(
+    const label i,
+    const scalar V
+) const
+{
+    // The gas's own state: its content at the step's start, in the gap's
+    // volume now, less the work it has done since (it pays as it pushes)
+    const ductNetwork::content& c = content0_[i];
+    const scalar rhoe = (eInt0_[i] - work_[i])/V;
+    if (!mixture_.twoPhase())
+    {
+        const scalar rho = c.m/V;
+        return mixture_.p(1, rho, rho, rhoe);
+    }
+    const scalar alphaEps = 1e-12, rhoFloor = 1e-12;
+    const scalar a = min(max(c.aV/V0_[i], scalar(0)), scalar(1));
+    const scalar m1 = min(max(c.m1, scalar(0)), c.m);
+    const scalar rho1 = max(m1/(max(a, alphaEps)*V), rhoFloor);
+    const scalar rho2 = max((c.m - m1)/(max(1 - a, alphaEps)*V), rhoFloor);
+    return mixture_.p(a, rho1, rho2, rhoe);
+}
+
+
+void Foam::crackNetwork::addForces
+(
+    const UList<vector2D>& x,
+    UList<vector2D>& nodeForces
+)
+{
+    forAll(cvJoint_, i)
+    {
+        scalar V, L, g0, g1;
+        vector2D n;
+        jointGeometry(cvJoint_[i], x, V, L, n, g0, g1);
+        const scalar p = gapPressure(i, V);
+        if (!(p > 0))
+        {
+            FatalErrorInFunction
+                << "crackNetwork: the gas of joint " << cvJoint_[i]
+                << " has no pressure left (" << p << " Pa) after doing "
+                << work_[i] << " J of work: the solid's sub-steps are too"
+                << " long for it" << exit(FatalError);
+        }
+        faceForce_[i] = -0.5*p*L*n;
+        const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
+        nodeForces[jn[0]] += faceForce_[i];
+        nodeForces[jn[1]] += faceForce_[i];
+        nodeForces[jn[2]] -= faceForce_[i];
+        nodeForces[jn[3]] -= faceForce_[i];
+    }
+}
+
+
+Foam::scalar Foam::crackNetwork::stableSubStep
+(
+    const UList<vector2D>& x,
+    const UList<vector2D>& v,
+    const UList<scalar>& invMass
+) const
+{
+    // Stability: a node moving by delta changes the gap's volume by
+    // L delta/2, its pressure by Gamma p L delta/(2 V), its force by L/2 of
+    // that: k = Gamma p L^2/(4 V); two opposite nodes close on each other,
+    // so omega^2 = 2 k/m, and h <= 0.5*2/omega. Accuracy: the gap changes
+    // by at most 5 % in a sub-step (the forces are those at its start: a
+    // thin gap that opens many times over in one sub-step would be paid at
+    // its start pressure), from the faces' speed and acceleration
+    scalar h = GREAT;
+    forAll(cvJoint_, i)
+    {
+        scalar V, L, g0, g1;
+        vector2D n;
+        jointGeometry(cvJoint_[i], x, V, L, n, g0, g1);
+        const scalar p = max(gapPressure(i, V), scalar(0));
+        const scalar k = Gamma_[i]*p*L*L/(4*V);
+        const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
+        scalar im = 0;
+        for (const label node : jn) im = max(im, invMass[node]);
+        h = min(h, 0.5*2/Foam::sqrt(2*k*im));
+        const scalar gap = V/L;
+        const scalar speed = max
+        (
+            mag((v[jn[2]] - v[jn[0]]) & n), mag((v[jn[3]] - v[jn[1]]) & n)
+        );
+        const scalar accel = p*L*im;
+        h = min(h, 0.05*gap/max(speed, VSMALL));
+        h = min(h, Foam::sqrt(0.1*gap/max(accel, VSMALL)));
+    }
+    return h;
+}
+
+
+void Foam::crackNetwork::addWork(const UList<vector2D>& d)
+{
+    forAll(cvJoint_, i)
+    {
+        const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
+        FixedList<vector2D, 4>& last = dLast_[i];
+        vector2D dd[4];
+        for (label k = 0; k < 4; ++k)
+        {
+            dd[k] = d[jn[k]] - last[k];
+        }
+        work_[i] += faceForce_[i] & (dd[0] + dd[1] - dd[2] - dd[3]);
+        for (label k = 0; k < 4; ++k) last[k] = d[jn[k]];
+    }
+}
+
+
+Foam::scalar Foam::crackNetwork::endStep
+(
+    const UList<vector2D>& x,
     const scalar dt
 )
 {
     ductNetwork::geometry& g = gas_.geom();
-    scalarField open0(2*cvJoint_.size()), open1(2*cvJoint_.size());
-    List<vector2D> normal(cvJoint_.size());
-    scalarField length(cvJoint_.size());
+    scalarField open1(2*cvJoint_.size());
     forAll(cvJoint_, i)
     {
-        const label j = cvJoint_[i];
-        scalar L, g0, g1;
+        scalar L;
         vector2D n;
-        jointGeometry(j, x1, g.V1[i], L, n, open1[2*i], open1[2*i + 1]);
-        jointGeometry(j, x0, g.V0[i], L, n, g0, g1);
-        open0[2*i] = g0;
-        open0[2*i + 1] = g1;
-        normal[i] = n;
-        length[i] = L;
+        jointGeometry(cvJoint_[i], x, g.V1[i], L, n, open1[2*i], open1[2*i + 1]);
+        g.V0[i] = V0_[i];
         // Axis along A's face: n = (dy, -dx)/L, so the axis is (-n.y, n.x)
         g.axis[i] = vector(-n.y(), n.x(), 0);
         g.wallArea[i] = 2*L;
@@ -335,52 +469,13 @@ void Foam::crackNetwork::advance
         const vector dir = (l[2] == 1 ? 1 : -1)*g.axis[a];
         g.owner[f] = a;
         g.neighbour[f] = b;
-        g.Sf[f] = 0.5*(width(open0) + width(open1))*dir;
+        g.Sf[f] = 0.5*(width(open0_) + width(open1))*dir;
     }
+    // The gas pays the work its forces did (not p dV: a thin gap that
+    // opens many times over in a step would take more than the gas has)
+    g.wallWork = work_;
     gas_.advance(dt);
-
-    const scalarField& p = gas_.meanPressure();
-    forAll(faceForce_, i)
-    {
-        faceForce_[i] = -0.5*p[i]*length[i]*normal[i];
-    }
-}
-
-
-void Foam::crackNetwork::addNodeForces(UList<vector2D>& nodeForces) const
-{
-    forAll(cvJoint_, i)
-    {
-        const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
-        nodeForces[jn[0]] += faceForce_[i];
-        nodeForces[jn[1]] += faceForce_[i];
-        nodeForces[jn[2]] -= faceForce_[i];
-        nodeForces[jn[3]] -= faceForce_[i];
-    }
-}
-
-
-Foam::scalar Foam::crackNetwork::payWork(const UList<vector2D>& d)
-{
-    if (d.size() != topo_.nNodes())
-    {
-        FatalErrorInFunction
-            << "crackNetwork: " << d.size() << " work displacements for "
-            << topo_.nNodes() << " nodes (femdemSolid::trackWorkDisplacement"
-            << " not called?)" << exit(FatalError);
-    }
-    const scalarField& paid = gas_.wallWorkOf();
-    scalarField dE(cvJoint_.size());
-    scalar total = 0;
-    forAll(cvJoint_, i)
-    {
-        const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
-        const scalar w =
-            faceForce_[i] & (d[jn[0]] + d[jn[1]] - d[jn[2]] - d[jn[3]]);
-        dE[i] = paid[i] - w;
-        total += w;
-    }
-    gas_.addEnergy(dE);
+    const scalar total = sum(work_);
     return total;
 }
 

@@ -4,6 +4,7 @@
 #include "crackNetwork.H"
 #include "femdemSolid.H"
 #include "IStringStream.H"
+#include "mathematicalConstants.H"
 #include <cstdio>
 #include <string>
 
@@ -15,6 +16,23 @@ namespace
     {
         IStringStream is(text);
         return dictionary(is);
+    }
+
+    // A rock that does not break further, without contact
+    dictionary rockDict
+    (
+        const std::string& E,
+        const std::string& extra = "",
+        const std::string& materialExtra = ""
+    )
+    {
+        return dictOf
+        (
+            "contactLaw none; trackEnergy true; " + extra
+          + " materials { rock { E " + E + "; nu 0.25; rho 2500;"
+            " tensileStrength 1e10; cohesion 1e10; frictionAngle 30;"
+            " GI 1e8; GII 1e8; " + materialExtra + " } }"
+        );
     }
 
     void record(const std::string& key, const scalar v)
@@ -46,6 +64,39 @@ namespace
 }
 
 
+namespace
+{
+    // One gas step of the crack network with the solid's sub-steps in it
+    // (the gas's forces follow the gaps every sub-step); returns the work
+    // the gas did
+    scalar coupledStep
+    (
+        femdemSolid& solid, crackNetwork& net, const scalar dt,
+        List<vector2D>& f, label& nSub
+    )
+    {
+        net.beginStep(solid.x(), solid.workDisplacement());
+        scalar t = 0;
+        while (t < dt*(1 - 1e-12))
+        {
+            const scalar h = min
+            (
+                min(solid.stableTimeStep(), net.stableSubStep(solid.x(), solid.v(), solid.invMass())),
+                dt - t
+            );
+            f = Zero;
+            net.addForces(solid.x(), f);
+            solid.externalForce() = f;
+            solid.step(h);
+            net.addWork(solid.workDisplacement());
+            t += h;
+            ++nSub;
+        }
+        return net.endStep(solid.x(), dt);
+    }
+}
+
+
 TEST(crackNetwork, gasInAGapDrivesTwoBlocksApart)
 {
     // Two 10 x 10 mm blocks of one rectangle, the joints between them
@@ -58,16 +109,7 @@ TEST(crackNetwork, gasInAGapDrivesTwoBlocksApart)
     const scalar p0 = 1e6, rho0 = 10, gamma = 1.4;
     const triangleMesh mesh =
         triangleMesh::rectangle(vector2D(0, 0), vector2D(W, H), 2, 4, "rock");
-    femdemSolid solid
-    (
-        mesh,
-        dictOf
-        (
-            "contactLaw none; trackEnergy true; materials { rock { E 1e11;"
-            " nu 0.25; rho 2500; tensileStrength 1e10; cohesion 1e10;"
-            " frictionAngle 30; GI 1e8; GII 1e8; } }"
-        )
-    );
+    femdemSolid solid(mesh, rockDict("1e11"));
     const jointTopology& topo = solid.topology();
     DynamicList<label> crack;
     forAll(topo.jointNodes(), j)
@@ -114,17 +156,12 @@ TEST(crackNetwork, gasInAGapDrivesTwoBlocksApart)
 
     const scalar dt = 5e-7, tEnd = 8e-5;
     const label nSteps = label(tEnd/dt + 0.5);
-    List<vector2D> x1(solid.nNodes()), f(solid.nNodes());
+    List<vector2D> f(solid.nNodes());
     scalar paid = 0;
+    label nSub = 0;
     for (label k = 0; k < nSteps; ++k)
     {
-        forAll(x1, n) x1[n] = solid.x()[n] + dt*solid.v()[n];
-        net.advance(solid.x(), x1, dt);
-        f = Zero;
-        net.addNodeForces(f);
-        solid.externalForce() = f;
-        solid.advance(dt);
-        paid += net.payWork(solid.workDisplacement());
+        paid += coupledStep(solid, net, dt, f, nSub);
 
         const scalar k1s = v, k1v = acc(s);
         const scalar k2s = v + 0.5*dt*k1v, k2v = acc(s + 0.5*dt*k1s);
@@ -147,6 +184,7 @@ TEST(crackNetwork, gasInAGapDrivesTwoBlocksApart)
     const scalar pGap = net.gas().p()[0];
     const scalar pOde = p0*Foam::pow(g0/(g0 + 2*s), gamma);
     record("steps", nSteps);
+    record("solidSubSteps", nSub);
     record("odeBlockSpeed_m_per_s", v);
     record("blockSpeedLeft_m_per_s", vL);
     record("blockSpeedRight_m_per_s", vR);
@@ -174,16 +212,7 @@ TEST(crackNetwork, jointsJoiningAndLeavingKeepTheGas)
     // goes to the joint it touches): mass and energy unchanged
     const triangleMesh mesh =
         triangleMesh::rectangle(vector2D(0, 0), vector2D(0.02, 0.06), 2, 6, "rock");
-    femdemSolid solid
-    (
-        mesh,
-        dictOf
-        (
-            "contactLaw none; materials { rock { E 1e10; nu 0.25;"
-            " rho 2500; tensileStrength 1e7; cohesion 1e7; frictionAngle 30;"
-            " GI 100; GII 100; } }"
-        )
-    );
+    femdemSolid solid(mesh, rockDict("1e10"));
     const jointTopology& topo = solid.topology();
     // The joints on x = 0.01, bottom to top
     List<std::pair<scalar, label>> line;
@@ -246,6 +275,116 @@ TEST(crackNetwork, jointsJoiningAndLeavingKeepTheGas)
     net.setJoints(labelList({line[0].second}), solid.x());
     EXPECT_GT(net.createdMass(), 0);
     EXPECT_GT(net.removedMass(), 0);
+}
+
+
+namespace
+{
+    // A square elastic plate (side W) with a straight crack of length 2a
+    // through its centre along the joints of y = W/2, gas in the crack,
+    // damped to rest; returns the crack's opening volume (per unit depth,
+    // from the nodes) over Sneddon's for the gas pressure at rest
+    scalar sneddonRatio
+    (
+        const std::string& penalty, scalar& pRest, scalar& kineticShare,
+        label& subSteps, scalar& energyAccount
+    )
+    {
+        const scalar W = 0.2, a = 0.02, E = 10e9, nu = 0.25;
+        const triangleMesh mesh =
+            triangleMesh::rectangle(vector2D(0, 0), vector2D(W, W), 40, 40, "rock");
+        femdemSolid solid(mesh, rockDict("10e9", "massDamping 3e4;", penalty));
+        const jointTopology& topo = solid.topology();
+        DynamicList<label> crack;
+        forAll(topo.jointNodes(), j)
+        {
+            const jointNodeList& jn = topo.jointNodes()[j];
+            const vector2D& x0 = solid.x()[jn[0]];
+            const vector2D& x1 = solid.x()[jn[1]];
+            if
+            (
+                mag(x0.y() - 0.5*W) < 1e-12 && mag(x1.y() - 0.5*W) < 1e-12
+             && mag(0.5*(x0.x() + x1.x()) - 0.5*W) < a
+            )
+            {
+                crack.append(j);
+                solid.setBroken(j);
+            }
+        }
+        EXPECT_EQ(crack.size(), 8);
+        solid.trackWorkDisplacement();
+        blastMixture mix(dictOf("materials (air); air { equationOfState idealGas; gamma 1.4; }"));
+        crackNetwork net(topo, mix, dictOf("minAperture 1e-6;"));
+        net.setJoints(crack, solid.x());
+        net.fill(1000, 1e9, solid.x());
+
+        List<vector2D> f(solid.nNodes());
+        scalar t = 0;
+        label nSub = 0;
+        const scalar Egas0 = net.gas().energy();
+        while (t < 8e-4)
+        {
+            const scalar dt = min(1e-6, net.maxDeltaT(0.5));
+            coupledStep(solid, net, dt, f, nSub);
+            t += dt;
+        }
+        subSteps = nSub;
+        const femdemSolid::energyBudget b0 = solid.energies();
+        energyAccount =
+            mag(net.gas().energy() - Egas0 + b0.external)/Egas0;
+        // Opening volume from the nodes: sum of L (g0 + g1)/2
+        scalar V = 0;
+        for (const label j : crack)
+        {
+            const jointNodeList& jn = topo.jointNodes()[j];
+            const vector2D d = solid.x()[jn[1]] - solid.x()[jn[0]];
+            const vector2D n = vector2D(d.y(), -d.x())/mag(d);
+            const scalar g0 = (solid.x()[jn[2]] - solid.x()[jn[0]]) & n;
+            const scalar g1 = (solid.x()[jn[3]] - solid.x()[jn[1]]) & n;
+            V += 0.5*mag(d)*(g0 + g1);
+        }
+        pRest = sum(net.gas().p())/net.size();
+        const femdemSolid::energyBudget b = solid.energies();
+        kineticShare = b.kinetic/b.elastic;
+        const scalar VSneddon =
+            2*constant::mathematical::pi*(1 - nu*nu)*pRest*a*a/E;
+        return V/VSneddon;
+    }
+}
+
+
+TEST(crackNetwork, pressurisedCrackOpensAsSneddon)
+{
+    // Sneddon, plane strain: opening volume 2 pi (1 - nu^2) p a^2/E per
+    // unit depth for a crack of length 2a under internal pressure p in an
+    // infinite plate (here a/W = 0.1, 8 joints along the crack); the
+    // joints' penalty adds compliance: its share from a 10 times stiffer
+    // penalty
+    scalar p1, k1, p2, k2, e1, e2;
+    label n1, n2;
+    scalar r1 = 0, r2 = 0;
+    try
+    {
+        r1 = sneddonRatio("", p1, k1, n1, e1);
+        r2 = sneddonRatio("jointPenalty 2e13;", p2, k2, n2, e2);
+    }
+    catch (const Foam::error& e)
+    {
+        FAIL() << e.message();
+    }
+    record("openingOverSneddon", r1);
+    record("openingOverSneddonStifferJoints", r2);
+    record("gasPressureAtRest_Pa", p1);
+    record("kineticOverElasticAtTheEnd", k1);
+    record("jointComplianceShare", r1 - r2);
+    record("solidSubSteps", n1);
+    record("gasEnergyChangePlusWorkOnSolid_overEgas0", e1);
+    EXPECT_LT(mag(r1 - 1), 0.15);
+    EXPECT_LT(mag(r2 - 1), 0.15);
+    EXPECT_LT(k1, 1e-3);
+    EXPECT_GT(p1, 1e5);
+    EXPECT_LT(e1, 1e-12);
+    EXPECT_LT(e2, 1e-12);
 }
 
 
