@@ -1,0 +1,2 @@
+// Compile OpenFOAM v1912's ptscotchDecomp.C unchanged (see Make/files)
+#include "ptscotchDecomp.C"

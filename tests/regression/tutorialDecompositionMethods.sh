@@ -1,0 +1,60 @@
+#!/bin/bash
+# The tutorials' -np N -method NAME options (tutorials/jwlIbFoam/common/
+# parallelFunctions), on a copy of benchBlast: a wrong -np, an unknown method
+# and -method without -np are refused before any mesh is made, with the
+# option named, and leave the tracked files as they are; then
+# './Allrun -quick -np 2 -method ptscotch' (decomposed by redistributePar)
+# and '-method scotch' (decomposePar) run, their logs show the method, their
+# figures pass checkSummary, and the fragment count and x50 are printed beside
+# the serial quick run of test tutorialBenchBlast when it has run before (not
+# a check: the gas reductions differ in the last bits between decompositions,
+# and fracture amplifies them).
+set -eu
+cd "$JWLIBFOAM_TEST_DIR" && rm -rf benchBlast
+cp -r "$JWLIBFOAM_TUTORIALS/jwlIbFoam/benchBlast" . && cd benchBlast
+fail=0
+
+refused() {  # expected-message options...: refused, before meshing, nothing tracked changed
+    local want=$1; shift
+    touch "$JWLIBFOAM_TEST_DIR/stamp"; sleep 1
+    if ./Allrun "$@" > ../log.refused 2>&1; then
+        echo ">> Allrun $*: ran  <-- FAIL"; fail=1; return
+    fi
+    local changed
+    changed=$(find 0.orig constant system -type f -newer "$JWLIBFOAM_TEST_DIR/stamp" | tr '\n' ' ')
+    if ! grep -q -- "$want" ../log.refused || [ -e log.blockMesh ] || [ -n "$changed" ]; then
+        tail -3 ../log.refused
+        echo ">> Allrun $*: not refused with '$want' before meshing, or files changed ($changed)  <-- FAIL"; fail=1
+    else
+        echo ">> Allrun $*: refused: $(grep -m1 -- "$want" ../log.refused)"
+    fi
+}
+refused "-np 'x': expected an integer" -quick -np x
+refused "-method 'kahip' is not a decomposition method here" -quick -np 2 -method kahip
+refused "-method scotch needs -np N with N > 1" -quick -method scotch
+
+ref=$JWLIBFOAM_PROJECT/tests/results/tutorialBenchBlast/benchBlast/summary.json
+for method in ptscotch scotch; do
+    start=$(date +%s)
+    ./Allrun -quick -np 2 -method $method > ../log.Allrun.$method 2>&1 \
+        || { tail -20 ../log.Allrun.$method; echo ">> Allrun -quick -np 2 -method $method failed  <-- FAIL"; exit 1; }
+    log=$([ $method = ptscotch ] && echo log.redistributePar || echo log.decomposePar)
+    if grep -q "^Selecting decompositionMethod $method \[2\]" $log; then
+        echo ">> -method $method: $log: $(grep -m1 '^Selecting decompositionMethod' $log); $(grep -m1 'Max number of cells' $log | sed 's/^ *//'); $(( $(date +%s) - start )) s wall"
+    else
+        echo ">> -method $method: $log does not select $method  <-- FAIL"; fail=1
+    fi
+    "$JWLIBFOAM_PROJECT/tests/bin/checkSummary" summary.json || fail=1
+    /usr/bin/python3 - "$method" "$ref" <<'PY'
+import json, os, sys
+method, ref = sys.argv[1], sys.argv[2]
+get = lambda f, s: next(x["value"] for x in json.load(open(f))["figures"] if x["name"].startswith(s))
+line = (f">> -np 2 -method {method}: fragments {get('summary.json', 'fragments (loose'):.0f},"
+        f" x50 {get('summary.json', 'x50 measured'):.4f} m, broken joints {get('summary.json', 'broken joints'):.0f}")
+if os.path.exists(ref):
+    line += (f"; serial (tutorialBenchBlast): {get(ref, 'fragments (loose'):.0f},"
+             f" {get(ref, 'x50 measured'):.4f} m, {get(ref, 'broken joints'):.0f}")
+print(line)
+PY
+done
+exit $fail
