@@ -20,6 +20,7 @@ Foam::ductNetwork::ductNetwork
     flux_(fluxScheme::New(dict)),
     RKorder_(dict.getOrDefault<label>("RKorder", 2)),
     frictionFactor_(dict.getOrDefault<scalar>("frictionFactor", 0)),
+    one_(1), one1_(1), one2_(1), oneRho_(1), oneP_(1), oneE_(1), oneC2_(1),
     wallWork_(0),
     mouthMass_(0),
     mouthEnergy_(0)
@@ -52,6 +53,8 @@ void Foam::ductNetwork::setSize(const label nVolumes, const label nInterfaces)
     g.Sf.setSize(nf, Zero);
     g.wallWork.clear();
     plenum_.rho.setSize(nf, 0); plenum_.p.setSize(nf, 0);
+    plenum_.alpha1.setSize(nf, 1);
+    plenum_.rho1.setSize(nf, 0); plenum_.rho2.setSize(nf, 0);
 
     for (scalarField* q : {&m_, &mE_, &aV_, &m1_})
     {
@@ -150,58 +153,100 @@ bool Foam::ductNetwork::primitives(label& bad)
 }
 
 
-void Foam::ductNetwork::inflowState
+Foam::scalar Foam::ductNetwork::mixtureC2
 (
-    const scalar rho0,
-    const scalar p0,
-    const scalar pDuct,
-    scalar& rho,
-    scalar& u,
-    scalar& p
+    const scalar alpha1,
+    const scalar rho1,
+    const scalar rho2,
+    const scalar p
 ) const
 {
-    rho = rho0;
-    u = 0;
-    p = p0;
+    if (!mixture_.twoPhase())
+    {
+        return mixture_.eos(0).c2(rho1, p);
+    }
+    one_[0] = alpha1; one1_[0] = rho1; one2_[0] = rho2;
+    oneRho_[0] = alpha1*rho1 + (1 - alpha1)*rho2;
+    oneP_[0] = p;
+    mixture_.rhoeC2(1, one_, one1_, one2_, oneRho_, oneP_, oneE_, oneC2_);
+    return oneC2_[0];
+}
+
+
+Foam::ductNetwork::boundaryState Foam::ductNetwork::inflowState
+(
+    const label f,
+    const scalar pDuct
+) const
+{
+    // The plenum's state, taken as the stagnation state, and its material-1
+    // mass fraction, frozen along the expansion
+    const bool two = mixture_.twoPhase();
+    const scalar p0 = plenum_.p[f];
+    const scalar a0 = two ? plenum_.alpha1[f] : 1;
+    const scalar r10 = two ? plenum_.rho1[f] : plenum_.rho[f];
+    const scalar r20 = two ? plenum_.rho2[f] : plenum_.rho[f];
+    const scalar rho0 = a0*r10 + (1 - a0)*r20;
+    const scalar Y1 = two ? a0*r10/rho0 : 1;
+
+    boundaryState b{rho0, 0, p0, a0, r10, r20, Y1};
     if (!(pDuct < p0))
     {
-        return;
+        return b;
     }
-    // Along the isentrope in y = ln p: drho/dy = p/c^2, and the kinetic
-    // energy gained is the enthalpy lost, d(u^2/2)/dy = -p/rho; stop where
-    // the flow turns sonic (the mass flux rho u is largest there: choked)
-    const equationOfState& eos = mixture_.eos(0);
+    // Each material along its own isentrope in y = ln p, drho_k/dy =
+    // p/c_k^2; the kinetic energy gained is the enthalpy lost, d(u^2/2)/dy
+    // = -p/rho (1/rho = Y1/rho1 + Y2/rho2); stop where the flow turns
+    // sonic (the mass flux rho u is largest there: choked)
+    const equationOfState& eos1 = mixture_.eos(0);
+    const equationOfState& eos2 = mixture_.eos(two ? 1 : 0);
     const scalar y0 = log(p0), y1 = log(pDuct);
     const label nSteps = max(label(16), label(64*(y0 - y1)));
     const scalar h = (y1 - y0)/nSteps;
-    // State (rho, k) with k = u^2/2, RK4 in y
-    auto rate = [&](const scalar y, const scalar r, scalar& dr, scalar& dk)
+    auto rhoMix = [&](const scalar r1, const scalar r2)
+    {
+        return two ? 1/(Y1/r1 + (1 - Y1)/r2) : r1;
+    };
+    auto rate = [&]
+    (
+        const scalar y, const scalar r1, const scalar r2,
+        scalar& d1, scalar& d2, scalar& dk
+    )
     {
         const scalar pp = exp(y);
-        dr = pp/eos.c2(r, pp);
-        dk = -pp/r;
+        d1 = pp/eos1.c2(r1, pp);
+        d2 = two ? pp/eos2.c2(r2, pp) : d1;
+        dk = -pp/rhoMix(r1, r2);
     };
-    scalar y = y0, r = rho0, k = 0;
+    scalar y = y0, r1 = r10, r2 = r20, k = 0;
     for (label s = 0; s < nSteps; ++s)
     {
-        scalar r1, k1, r2, k2, r3, k3, r4, k4;
-        rate(y, r, r1, k1);
-        rate(y + 0.5*h, r + 0.5*h*r1, r2, k2);
-        rate(y + 0.5*h, r + 0.5*h*r2, r3, k3);
-        rate(y + h, r + h*r3, r4, k4);
-        const scalar rEnd = r + h*(r1 + 2*r2 + 2*r3 + r4)/6;
-        const scalar kEnd = k + h*(k1 + 2*k2 + 2*k3 + k4)/6;
-        if (2*kEnd >= eos.c2(rEnd, exp(y + h)))
+        scalar a1, a2, ak, b1, b2, bk, c1, c2, ck, e1, e2, ek;
+        rate(y, r1, r2, a1, a2, ak);
+        rate(y + 0.5*h, r1 + 0.5*h*a1, r2 + 0.5*h*a2, b1, b2, bk);
+        rate(y + 0.5*h, r1 + 0.5*h*b1, r2 + 0.5*h*b2, c1, c2, ck);
+        rate(y + h, r1 + h*c1, r2 + h*c2, e1, e2, ek);
+        const scalar r1End = r1 + h*(a1 + 2*b1 + 2*c1 + e1)/6;
+        const scalar r2End = r2 + h*(a2 + 2*b2 + 2*c2 + e2)/6;
+        const scalar kEnd = k + h*(ak + 2*bk + 2*ck + ek)/6;
+        const scalar rEnd = rhoMix(r1End, r2End);
+        const scalar aEnd = two ? Y1*rEnd/r1End : 1;
+        if (2*kEnd >= mixtureC2(aEnd, r1End, r2End, exp(y + h)))
         {
             break;
         }
         y += h;
-        r = rEnd;
+        r1 = r1End;
+        r2 = r2End;
         k = kEnd;
     }
-    rho = r;
-    u = sqrt(max(2*k, scalar(0)));
-    p = exp(y);
+    b.rho = rhoMix(r1, r2);
+    b.u = sqrt(max(2*k, scalar(0)));
+    b.p = exp(y);
+    b.alpha1 = two ? Y1*b.rho/r1 : 1;
+    b.rho1 = r1;
+    b.rho2 = r2;
+    return b;
 }
 
 
@@ -210,17 +255,19 @@ void Foam::ductNetwork::mouthFlux(const label f)
     const label P = geometry_.owner[f];
     const scalar A = magSf_[f];
     const vector n = geometry_.Sf[f]/A;
-    scalar rhoB, pB;
+    scalar rhoB, pB, rhoEB, alphaB, Y1B;
     vector UB;
-    scalar rhoEB;
     if (plenum_.p[f] >= p_[P])
     {
         // Into the duct, from the plenum's state at rest
-        scalar uIn;
-        inflowState(plenum_.rho[f], plenum_.p[f], p_[P], rhoB, uIn, pB);
-        UB = -uIn*n;
+        const boundaryState b = inflowState(f, p_[P]);
+        rhoB = b.rho;
+        pB = b.p;
+        UB = -b.u*n;
+        alphaB = b.alpha1;
+        Y1B = b.Y1;
         rhoEB =
-            rhoB*mixture_.eos(0).e(rhoB, pB) + 0.5*rhoB*uIn*uIn;
+            mixture_.rhoe(b.alpha1, b.rho1, b.rho2, b.p) + 0.5*b.rho*sqr(b.u);
     }
     else
     {
@@ -231,12 +278,19 @@ void Foam::ductNetwork::mouthFlux(const label f)
         UB = U_[P] + (un - (U_[P] & n))*n;
         pB = un >= c_[P] ? p_[P] : plenum_.p[f];
         rhoEB = rhoe_[P] + 0.5*rho_[P]*magSqr(UB);
+        alphaB = alpha_[P];
+        Y1B = alpha_[P]*rho1_[P]/rho_[P];
     }
     const scalar uS = (UB & n)*A;
     F_.rho[f] = rhoB*uS;
     F_.rhoU[f] = rhoB*uS*UB + pB*A*n;
     F_.rhoE[f] = (rhoEB + pB)*uS;
     F_.uS[f] = uS;
+    if (mixture_.twoPhase())
+    {
+        F_.rhoY1[f] = F_.rho[f]*Y1B;
+        F_.alpha[f] = uS*alphaB;
+    }
 }
 
 
@@ -393,12 +447,6 @@ void Foam::ductNetwork::advance(const scalar dt)
         if (g.neighbour[f] >= 0)
         {
             W_[g.neighbour[f]] += g.Sf[f];
-        }
-        else if (mixture_.twoPhase())
-        {
-            FatalErrorInFunction
-                << "ductNetwork: mouths (interface " << f << ") need a"
-                << " single-material gas" << exit(FatalError);
         }
     }
     forAll(dVdt_, i)
