@@ -431,9 +431,8 @@ void Foam::femdemSolid::trackWorkDisplacement()
 }
 
 
-Foam::label Foam::femdemSolid::advance(const scalar interval)
+void Foam::femdemSolid::checkInterval(const scalar interval) const
 {
-    workDisplacement_ = Zero;
     // More than 1e8 sub-steps per interval is a case error (a deltaT made
     // for another problem), and beyond 2^31 the count would not fit a label
     if (!(interval < 1e8*deltaT_))
@@ -445,6 +444,52 @@ Foam::label Foam::femdemSolid::advance(const scalar interval)
             << " system/controlDict is far too large for this solid"
             << exit(FatalError);
     }
+}
+
+
+Foam::label Foam::femdemSolid::advance
+(
+    const scalar interval,
+    subStepHook& hook
+)
+{
+    workDisplacement_ = Zero;
+    checkInterval(interval);
+    scalar t = 0;
+    label n = 0;
+    while (t < interval*(1 - 1e-12))
+    {
+        const scalar hMax = hook.beforeSubStep(*this);
+        const scalar h = min(min(deltaT_, hMax), interval - t);
+        if (!(h > 1e-8*interval) && h < interval - t)
+        {
+            if (hMax < deltaT_)
+            {
+                FatalErrorInFunction
+                    << "the sub-step the coupling allows fell to " << hMax
+                    << " s at time " << time_ << " (more than 1e8 sub-steps"
+                    << " for the remaining " << interval - t << " s)"
+                    << exit(FatalError);
+            }
+            reportStepCollapse(interval - t);
+        }
+        step(h);
+        if (!(maxSpeedSqr_ <= sqr(maxNodeSpeed_)))
+        {
+            reportDivergence();
+        }
+        hook.afterSubStep(*this);
+        t += h;
+        ++n;
+    }
+    return n;
+}
+
+
+Foam::label Foam::femdemSolid::advance(const scalar interval)
+{
+    workDisplacement_ = Zero;
+    checkInterval(interval);
     label n = max(label(std::ceil(interval/deltaT_*(1 - 1e-12))), 1);
     scalar dt = interval/n;
     for (label i = 0; i < n; ++i)

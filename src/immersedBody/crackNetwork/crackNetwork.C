@@ -352,7 +352,7 @@ Foam::scalar Foam::crackNetwork::gapPressure
 }
 
 
-void Foam::crackNetwork::addForces
+void Foam::crackNetwork::updateForces
 (
     const UList<vector2D>& x,
     UList<vector2D>& nodeForces
@@ -372,13 +372,36 @@ void Foam::crackNetwork::addForces
                 << work_[i] << " J of work: the solid's sub-steps are too"
                 << " long for it" << exit(FatalError);
         }
-        faceForce_[i] = -0.5*p*L*n;
+        const vector2D f = -0.5*p*L*n;
+        const vector2D df = f - faceForce_[i];
+        faceForce_[i] = f;
         const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
-        nodeForces[jn[0]] += faceForce_[i];
-        nodeForces[jn[1]] += faceForce_[i];
-        nodeForces[jn[2]] -= faceForce_[i];
-        nodeForces[jn[3]] -= faceForce_[i];
+        nodeForces[jn[0]] += df;
+        nodeForces[jn[1]] += df;
+        nodeForces[jn[2]] -= df;
+        nodeForces[jn[3]] -= df;
     }
+}
+
+
+Foam::scalar Foam::crackNetwork::subSteps::beforeSubStep(femdemSolid& solid)
+{
+    List<vector2D>& f = solid.externalForce();
+    if (first_)
+    {
+        // advance() has zeroed the work displacement
+        net_.beginStep(solid.x(), solid.workDisplacement());
+        f = otherForces_;
+        first_ = false;
+    }
+    net_.updateForces(solid.x(), f);
+    return net_.stableSubStep(solid.x(), solid.v(), solid.invMass());
+}
+
+
+void Foam::crackNetwork::subSteps::afterSubStep(const femdemSolid& solid)
+{
+    net_.addWork(solid.workDisplacement());
 }
 
 

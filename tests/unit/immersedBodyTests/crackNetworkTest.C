@@ -72,26 +72,11 @@ namespace
     scalar coupledStep
     (
         femdemSolid& solid, crackNetwork& net, const scalar dt,
-        List<vector2D>& f, label& nSub
+        List<vector2D>& otherForces, label& nSub
     )
     {
-        net.beginStep(solid.x(), solid.workDisplacement());
-        scalar t = 0;
-        while (t < dt*(1 - 1e-12))
-        {
-            const scalar h = min
-            (
-                min(solid.stableTimeStep(), net.stableSubStep(solid.x(), solid.v(), solid.invMass())),
-                dt - t
-            );
-            f = Zero;
-            net.addForces(solid.x(), f);
-            solid.externalForce() = f;
-            solid.step(h);
-            net.addWork(solid.workDisplacement());
-            t += h;
-            ++nSub;
-        }
+        crackNetwork::subSteps hook(net, otherForces);
+        nSub += solid.advance(dt, hook);
         return net.endStep(solid.x(), dt);
     }
 }
@@ -156,7 +141,7 @@ TEST(crackNetwork, gasInAGapDrivesTwoBlocksApart)
 
     const scalar dt = 5e-7, tEnd = 8e-5;
     const label nSteps = label(tEnd/dt + 0.5);
-    List<vector2D> f(solid.nNodes());
+    List<vector2D> f(solid.nNodes(), Zero);
     scalar paid = 0;
     label nSub = 0;
     for (label k = 0; k < nSteps; ++k)
@@ -318,7 +303,7 @@ namespace
         net.setJoints(crack, solid.x());
         net.fill(1000, 1e9, solid.x());
 
-        List<vector2D> f(solid.nNodes());
+        List<vector2D> f(solid.nNodes(), Zero);
         scalar t = 0;
         label nSub = 0;
         const scalar Egas0 = net.gas().energy();
