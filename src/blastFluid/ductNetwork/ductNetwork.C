@@ -75,6 +75,11 @@ void Foam::ductNetwork::setSize(const label nVolumes, const label nInterfaces)
     }
     mU0_.setSize(n); RmU_.setSize(n); U_.setSize(n, Zero); W_.setSize(n);
     magSf_.setSize(nf);
+    for (scalarField* q : {&inMass_, &inEnergy_, &inMass1_, &inAlpha_})
+    {
+        q->setSize(nf, 0);
+    }
+    inMomentum_.setSize(nf, Zero);
     faces_.setSize(nf, mixture_.twoPhase());
     F_.setSize(nf, mixture_.twoPhase());
 }
@@ -362,6 +367,14 @@ void Foam::ductNetwork::stage(const scalar a, const scalar b, const scalar dt)
     forAll(g.owner, f)
     {
         const label P = g.owner[f], N = g.neighbour[f];
+        inMass_[f] -= b*dt*F_.rho[f];
+        inMomentum_[f] -= b*dt*F_.rhoU[f];
+        inEnergy_[f] -= b*dt*F_.rhoE[f];
+        if (twoPhase)
+        {
+            inMass1_[f] -= b*dt*F_.rhoY1[f];
+            inAlpha_[f] -= b*dt*F_.alpha[f];
+        }
         Rm_[P] -= F_.rho[f];
         RmU_[P] -= F_.rhoU[f];
         RmE_[P] -= F_.rhoE[f];
@@ -456,6 +469,7 @@ void Foam::ductNetwork::advance(const scalar dt)
     V_ = g.V0;
     m0_ = m_; mU0_ = mU_; mE0_ = mE_; aV0_ = aV_; m10_ = m1_;
     wallWork_ = mouthMass_ = mouthEnergy_ = 0;
+    inMass_ = 0; inMomentum_ = Zero; inEnergy_ = 0; inMass1_ = 0; inAlpha_ = 0;
     wallWorkOf_ = 0;
     pMean_ = 0;
 

@@ -155,6 +155,7 @@ void Foam::crackNetwork::setJoints
         jointCV_[cvJoint_[i]] = i;
     }
     connect();
+    mouths_.clear();
     gas_.setSize(cvJoint_.size(), links_.size());
     faceForce_.setSize(cvJoint_.size());
     faceForce_ = Zero;
@@ -276,6 +277,23 @@ void Foam::crackNetwork::setJoints
         createdMass_ += c.m;
         createdEnergy_ += c.mE;
     }
+}
+
+
+void Foam::crackNetwork::setMouths(const UList<FixedList<label, 2>>& mouths)
+{
+    for (const FixedList<label, 2>& m : mouths)
+    {
+        if (m[0] < 0 || m[0] >= cvJoint_.size() || m[1] < 0 || m[1] > 1)
+        {
+            FatalErrorInFunction
+                << "crackNetwork: mouth (" << m[0] << " " << m[1] << ") of a"
+                << " network of " << cvJoint_.size() << " control volumes"
+                << exit(FatalError);
+        }
+    }
+    mouths_ = mouths;
+    gas_.setSize(cvJoint_.size(), links_.size() + mouths_.size());
 }
 
 
@@ -493,6 +511,16 @@ Foam::scalar Foam::crackNetwork::endStep
         g.owner[f] = a;
         g.neighbour[f] = b;
         g.Sf[f] = 0.5*(width(open0_) + width(open1))*dir;
+    }
+    forAll(mouths_, k)
+    {
+        const label a = mouths_[k][0], e = mouths_[k][1];
+        const label f = links_.size() + k;
+        const scalar w =
+            0.5*(max(open0_[2*a + e], minAperture_) + max(open1[2*a + e], minAperture_));
+        g.owner[f] = a;
+        g.neighbour[f] = -1;
+        g.Sf[f] = w*(e == 1 ? 1 : -1)*g.axis[a];
     }
     // The gas pays the work its forces did (not p dV: a thin gap that
     // opens many times over in a step would take more than the gas has)

@@ -373,4 +373,83 @@ TEST(crackNetwork, pressurisedCrackOpensAsSneddon)
 }
 
 
+TEST(crackNetwork, edgeCrackFillsFromItsMouth)
+{
+    // A crack from the free edge of a plate (4 joints, 20 mm), its mouth
+    // on the edge open to a plenum of air at 50 bar (held): the gas flows
+    // in until the crack's pressure is the plenum's, the crack opens, and
+    // what entered through the mouth is what the crack holds plus the work
+    // it did on the solid
+    const scalar W = 0.1, a = 0.02, pPlenum = 5e6, rhoPlenum = 50;
+    const triangleMesh mesh =
+        triangleMesh::rectangle(vector2D(0, 0), vector2D(W, W), 20, 20, "rock");
+    femdemSolid solid(mesh, rockDict("10e9", "massDamping 3e4;"));
+    const jointTopology& topo = solid.topology();
+    DynamicList<label> crack;
+    DynamicList<FixedList<label, 2>> mouths;
+    forAll(topo.jointNodes(), j)
+    {
+        const jointNodeList& jn = topo.jointNodes()[j];
+        const vector2D& x0 = solid.x()[jn[0]];
+        const vector2D& x1 = solid.x()[jn[1]];
+        if
+        (
+            mag(x0.y() - 0.5*W) < 1e-12 && mag(x1.y() - 0.5*W) < 1e-12
+         && 0.5*(x0.x() + x1.x()) < a
+        )
+        {
+            if (mag(x0.x()) < 1e-12) mouths.append(FixedList<label, 2>({label(crack.size()), 0}));
+            if (mag(x1.x()) < 1e-12) mouths.append(FixedList<label, 2>({label(crack.size()), 1}));
+            crack.append(j);
+            solid.setBroken(j);
+        }
+    }
+    ASSERT_EQ(crack.size(), 4);
+    ASSERT_EQ(mouths.size(), 1);
+    solid.trackWorkDisplacement();
+    blastMixture mix(dictOf("materials (air); air { equationOfState idealGas; gamma 1.4; }"));
+    crackNetwork net(topo, mix, dictOf(""));
+    net.setJoints(crack, solid.x());
+    net.fill(1.2, 1e5, solid.x());
+    net.setMouths(mouths);
+    const label m = net.mouthInterface(0);
+    net.plenum().rho[m] = rhoPlenum;
+    net.plenum().p[m] = pPlenum;
+
+    const scalar mass0 = net.gas().mass(), E0 = net.gas().energy();
+    scalar massIn = 0, energyIn = 0, work = 0, t = 0;
+    label nSub = 0;
+    List<vector2D> f(solid.nNodes(), Zero);
+    while (t < 1.5e-3)
+    {
+        const scalar dt = min(1e-6, net.maxDeltaT(0.5));
+        work += coupledStep(solid, net, dt, f, nSub);
+        massIn += net.gas().inMass()[m];
+        energyIn += net.gas().inEnergy()[m];
+        t += dt;
+    }
+    scalar pMin = GREAT, pMax = 0;
+    forAll(net.gas().p(), i)
+    {
+        pMin = min(pMin, net.gas().p()[i]);
+        pMax = max(pMax, net.gas().p()[i]);
+    }
+    const scalar eMass = mag(net.gas().mass() - mass0 - massIn)/massIn;
+    const scalar eEnergy =
+        mag(net.gas().energy() - E0 + work - energyIn)/energyIn;
+    record("crackPressureMinOverPlenum_minus1", pMin/pPlenum - 1);
+    record("crackPressureMaxOverPlenum_minus1", pMax/pPlenum - 1);
+    record("massInThroughTheMouth_kg_per_m", massIn);
+    record("massAccount_overMassIn", eMass);
+    record("energyAccount_overEnergyIn", eEnergy);
+    record("workOnSolid_J_per_m", work);
+    record("solidSubSteps", nSub);
+    EXPECT_LT(mag(pMin/pPlenum - 1), 0.01);
+    EXPECT_LT(mag(pMax/pPlenum - 1), 0.01);
+    EXPECT_LT(eMass, 1e-12);
+    EXPECT_LT(eEnergy, 1e-12);
+    EXPECT_GT(work, 0);
+}
+
+
 // ************************************************************************* //
