@@ -102,9 +102,16 @@ void Foam::ductNetwork::setState
     mE_[i] = (rhoe + 0.5*rho*magSqr(U))*V;
     aV_[i] = a*V;
     m1_[i] = a*rho*V;
-    V_ = geometry_.V0;
-    label bad = -1;
-    primitives(bad);
+    // Its primitives alone (a loop filling every volume stays O(n))
+    V_[i] = V;
+    rho_[i] = rho;
+    U_[i] = U;
+    p_[i] = p;
+    rhoe_[i] = rhoe;
+    alpha_[i] = a;
+    rho1_[i] = rho2_[i] = rho;
+    c2_[i] = mixtureC2(a, rho, rho, p);
+    c_[i] = sqrt(max(c2_[i], scalar(0)));
 }
 
 

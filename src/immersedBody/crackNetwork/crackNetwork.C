@@ -486,7 +486,8 @@ Foam::scalar Foam::crackNetwork::endStep
 )
 {
     ductNetwork::geometry& g = gas_.geom();
-    scalarField open1(2*cvJoint_.size());
+    scalarField& open1 = open1_;
+    open1.setSize(2*cvJoint_.size());
     forAll(cvJoint_, i)
     {
         scalar L;
