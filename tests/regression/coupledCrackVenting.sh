@@ -82,11 +82,5 @@ res.append(("venting: max |gas energy + solid external work - initial| / total e
 res.append(("venting: max |solid energy - external work - initial| / total energy (FEMDEM's own budget)",
             np.abs(solid - W - solid[0] + W[0]).max() / abs(E[0]), 1e-3, "<="))
 res.append(("venting: (gas + solid energy change) / solid energy gained", (E[-1] - E[0]) / gain, 0.08, "<="))
-bad = 0
-for name, v, tol, how in res:
-    ok = tol is None or (v >= tol if how == ">=" else abs(v) <= tol)
-    bad += not ok
-    lim = "" if tol is None else f" ({'at least' if how == '>=' else 'tolerance'} {tol:g})"
-    print(f">> {name} = {v:.4g}{lim}" + ("" if ok else "  <-- FAIL"))
-sys.exit(1 if bad else 0)
+sys.exit(1 if budgetFile.report(res) else 0)
 PY

@@ -60,6 +60,7 @@ Description
 #include "femdemOutput.H"
 #include "triangleMesh.H"
 #include "immersedBodyCoupling.H"
+#include "crackGasCoupling.H"
 #include "solidVtkWriter.H"
 #include "stopOnSignal.H"
 #include "restartableTime.H"

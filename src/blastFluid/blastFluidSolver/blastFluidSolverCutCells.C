@@ -1202,6 +1202,65 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
 }
 
 
+void Foam::blastFluidSolver::addContent
+(
+    const labelUList& cells,
+    const UList<scalar>& dm,
+    const UList<vector>& dmU,
+    const UList<scalar>& dE,
+    const UList<scalar>& dm1
+)
+{
+    const scalarField& V = mesh_.V();
+    scalarField& rho = rho_.primitiveFieldRef();
+    vectorField& rhoU = rhoU_.primitiveFieldRef();
+    scalarField& rhoE = rhoE_.primitiveFieldRef();
+    forAll(cells, k)
+    {
+        const label c = cells[k];
+        const scalar phi =
+            fluidFractionPtr_.valid()
+          ? fluidFractionPtr_->primitiveField()[c] : scalar(1);
+        const scalar Vg = phi*V[c];
+        if (!(Vg > 0))
+        {
+            FatalErrorInFunction
+                << "blastFluidSolver: gas added to cell " << c << " at "
+                << mesh_.C()[c] << ", which holds no gas"
+                << exit(FatalError);
+        }
+        if (twoPhase_)
+        {
+            // The added masses at the cell's phase densities, the cell's
+            // gas volume kept: alpha = (alpha Vg + dm1/rho1)/(Vg + dm1/rho1
+            // + dm2/rho2)
+            scalar& alpha = alpha1Ptr_->primitiveFieldRef()[c];
+            const scalar r1 = rho1Ptr_->primitiveField()[c];
+            const scalar r2 = rho2Ptr_->primitiveField()[c];
+            const scalar v1 = dm1[k]/r1, v2 = (dm[k] - dm1[k])/r2;
+            alpha = min
+            (
+                max((alpha*Vg + v1)/max(Vg + v1 + v2, VSMALL), scalar(0)),
+                scalar(1)
+            );
+            alphaRho1Ptr_->primitiveFieldRef()[c] += dm1[k]/Vg;
+        }
+        rho[c] += dm[k]/Vg;
+        rhoU[c] += dmU[k]/Vg;
+        rhoE[c] += dE[k]/Vg;
+        if (!(rho[c] > 0) || !(rhoE[c] - 0.5*magSqr(rhoU[c])/rho[c] > 0))
+        {
+            FatalErrorInFunction
+                << "blastFluidSolver: cell " << c << " at " << mesh_.C()[c]
+                << " has no gas left after giving " << -dm[k] << " kg and "
+                << -dE[k] << " J to gas outside the mesh" << exit(FatalError);
+        }
+    }
+    primitivesCurrent_ = false;
+    primitivesFromConservative(true);
+}
+
+
 Foam::tmp<Foam::scalarField> Foam::blastFluidSolver::fluidFraction() const
 {
     if (fluidFractionPtr_.valid())

@@ -20,6 +20,7 @@ Foam::ductNetwork::ductNetwork
     flux_(fluxScheme::New(dict)),
     RKorder_(dict.getOrDefault<label>("RKorder", 2)),
     frictionFactor_(dict.getOrDefault<scalar>("frictionFactor", 0)),
+    dt_(0),
     one_(1), one1_(1), one2_(1), oneRho_(1), oneP_(1), oneE_(1), oneC2_(1),
     wallWork_(0),
     mouthMass_(0),
@@ -55,6 +56,7 @@ void Foam::ductNetwork::setSize(const label nVolumes, const label nInterfaces)
     plenum_.rho.setSize(nf, 0); plenum_.p.setSize(nf, 0);
     plenum_.alpha1.setSize(nf, 1);
     plenum_.rho1.setSize(nf, 0); plenum_.rho2.setSize(nf, 0);
+    plenum_.maxMass.setSize(nf, 0);
 
     for (scalarField* q : {&m_, &mE_, &aV_, &m1_})
     {
@@ -213,7 +215,7 @@ Foam::ductNetwork::boundaryState Foam::ductNetwork::inflowState
     const equationOfState& eos1 = mixture_.eos(0);
     const equationOfState& eos2 = mixture_.eos(two ? 1 : 0);
     const scalar y0 = log(p0), y1 = log(pDuct);
-    const label nSteps = max(label(16), label(64*(y0 - y1)));
+    const label nSteps = max(label(8), label(16*(y0 - y1)));
     const scalar h = (y1 - y0)/nSteps;
     auto rhoMix = [&](const scalar r1, const scalar r2)
     {
@@ -293,9 +295,17 @@ void Foam::ductNetwork::mouthFlux(const label f)
         alphaB = alpha_[P];
         Y1B = alpha_[P]*rho1_[P]/rho_[P];
     }
-    const scalar uS = (UB & n)*A;
+    scalar uS = (UB & n)*A;
+    // A plenum gives at most maxMass in a step (a small cut cell)
+    scalar scale = 1;
+    const scalar cap = plenum_.maxMass[f];
+    if (cap > 0 && -rhoB*uS*dt_ > cap)
+    {
+        scale = cap/(-rhoB*uS*dt_);
+    }
+    uS *= scale;
     F_.rho[f] = rhoB*uS;
-    F_.rhoU[f] = rhoB*uS*UB + pB*A*n;
+    F_.rhoU[f] = rhoB*uS*UB + scale*pB*A*n;
     F_.rhoE[f] = (rhoEB + pB)*uS;
     F_.uS[f] = uS;
     if (mixture_.twoPhase())
@@ -469,6 +479,7 @@ void Foam::ductNetwork::advance(const scalar dt)
             W_[g.neighbour[f]] += g.Sf[f];
         }
     }
+    dt_ = dt;
     forAll(dVdt_, i)
     {
         dVdt_[i] = (g.V1[i] - g.V0[i])/dt;
@@ -561,6 +572,21 @@ void Foam::ductNetwork::setContent(const label i, const content& c)
     aV_[i] = c.aV;
     m1_[i] = c.m1;
     mU_[i] = c.mU;
+}
+
+
+void Foam::ductNetwork::correct(const scalarField& V)
+{
+    geometry_.V0 = V;
+    V_ = V;
+    label bad = -1;
+    if (!primitives(bad))
+    {
+        FatalErrorInFunction
+            << "ductNetwork: control volume " << bad << " of " << size()
+            << " has no physical state (volume " << V_[bad] << ", mass "
+            << m_[bad] << ")" << exit(FatalError);
+    }
 }
 
 

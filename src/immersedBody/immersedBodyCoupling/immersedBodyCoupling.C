@@ -121,7 +121,8 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
 {
     // A misspelt optional entry would silently take its default; the
     // entries of the removed first generation are named as such
-    const wordList valid({"method", "crackOpening", "crackVenting"});
+    const wordList valid
+    ({"method", "crackOpening", "crackVenting", "crackGas"});
     caseChecks::checkInput(dict);
     checkRemovedEntries(dict);
     // As the gas fields: a file with other dimensions is a wrong case

@@ -35,6 +35,18 @@ def drifts(b):
             np.abs(m - m[0]).max() / m[0])
 
 
+def report(results):
+    """Print (name, value, tolerance or None, "<=" or ">=") rows as '>>'
+    lines, marking failures; the number of failures"""
+    bad = 0
+    for name, v, tol, how in results:
+        ok = tol is None or (v >= tol if how == ">=" else abs(v) <= tol)
+        bad += not ok
+        lim = "" if tol is None else f" ({'at least' if how == '>=' else 'tolerance'} {tol:g})"
+        print(f">> {name} = {v:.4g}{lim}" + ("" if ok else "  <-- FAIL"))
+    return bad
+
+
 if __name__ == "__main__":
     b = load(*sys.argv[1:2])
     dE, dP, dm = drifts(b)

@@ -424,8 +424,8 @@ TEST(crackNetwork, edgeCrackFillsFromItsMouth)
     {
         const scalar dt = min(1e-6, net.maxDeltaT(0.5));
         work += coupledStep(solid, net, dt, f, nSub);
-        massIn += net.gas().inMass()[m];
-        energyIn += net.gas().inEnergy()[m];
+        massIn += net.mouthMass()[0];
+        energyIn += net.mouthEnergy()[0];
         t += dt;
     }
     scalar pMin = GREAT, pMax = 0;
