@@ -22,9 +22,7 @@ Foam::ductNetwork::ductNetwork
     frictionFactor_(dict.getOrDefault<scalar>("frictionFactor", 0)),
     dt_(0),
     one_(1), one1_(1), one2_(1), oneRho_(1), oneP_(1), oneE_(1), oneC2_(1),
-    wallWork_(0),
-    mouthMass_(0),
-    mouthEnergy_(0)
+    wallWork_(0)
 {
     if (RKorder_ < 1 || RKorder_ > 3)
     {
@@ -401,11 +399,6 @@ void Foam::ductNetwork::stage(const scalar a, const scalar b, const scalar dt)
             RmU_[N] += F_.rhoU[f];
             RmE_[N] += F_.rhoE[f];
         }
-        else
-        {
-            mouthMass_ -= b*dt*F_.rho[f];
-            mouthEnergy_ -= b*dt*F_.rhoE[f];
-        }
         if (twoPhase)
         {
             Rm1_[P] -= F_.rhoY1[f];
@@ -486,7 +479,7 @@ void Foam::ductNetwork::advance(const scalar dt)
     }
     V_ = g.V0;
     m0_ = m_; mU0_ = mU_; mE0_ = mE_; aV0_ = aV_; m10_ = m1_;
-    wallWork_ = mouthMass_ = mouthEnergy_ = 0;
+    wallWork_ = 0;
     inMass_ = 0; inMomentum_ = Zero; inEnergy_ = 0; inMass1_ = 0; inAlpha_ = 0;
     wallWorkOf_ = 0;
     pMean_ = 0;
@@ -587,6 +580,17 @@ void Foam::ductNetwork::correct(const scalarField& V)
             << " has no physical state (volume " << V_[bad] << ", mass "
             << m_[bad] << ")" << exit(FatalError);
     }
+}
+
+
+Foam::scalar Foam::ductNetwork::mouthSum(const scalarField& in) const
+{
+    scalar s = 0;
+    forAll(in, f)
+    {
+        if (geometry_.neighbour[f] < 0) s += in[f];
+    }
+    return s;
 }
 
 

@@ -171,9 +171,12 @@ void Foam::crackGasCoupling::exchange(blastFluidSolver& fluid)
 {
     // What entered the mouths leaves their cells; handed-over gas enters
     // (per unit depth in the network, times the depth in the mesh)
-    DynamicList<label> cells(mouths_.size() + givenCell_.size());
-    DynamicList<scalar> dm, dE, dm1;
-    DynamicList<vector> dmU;
+    DynamicList<label>& cells = cells_;
+    DynamicList<scalar>& dm = dm_;
+    DynamicList<scalar>& dE = dE_;
+    DynamicList<scalar>& dm1 = dm1_;
+    DynamicList<vector>& dmU = dmU_;
+    cells.clear(); dm.clear(); dE.clear(); dm1.clear(); dmU.clear();
     forAll(mouths_, k)
     {
         cells.append(mouthCell_[k]);

@@ -119,7 +119,8 @@ void Foam::crackNetwork::connect()
 {
     // (vertex, control volume, end) of every end, sorted by vertex
     const labelList& nodeVertex = topo_.nodeVertex();
-    List<FixedList<label, 3>> ends(2*cvJoint_.size());
+    List<FixedList<label, 3>>& ends = ends_;
+    ends.setSize(2*cvJoint_.size());
     forAll(cvJoint_, i)
     {
         const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
@@ -198,15 +199,8 @@ void Foam::crackNetwork::setJoints
 
     // A joint that leaves gives its content (equal shares) to the joints
     // that stay at the vertices of its ends, else it is removed
+    // (the ends of the new network, sorted by vertex by connect())
     const labelList& nodeVertex = topo_.nodeVertex();
-    List<FixedList<label, 2>> atVertex(2*cvJoint_.size());
-    forAll(cvJoint_, i)
-    {
-        const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
-        atVertex[2*i] = FixedList<label, 2>({nodeVertex[jn[0]], i});
-        atVertex[2*i + 1] = FixedList<label, 2>({nodeVertex[jn[1]], i});
-    }
-    std::sort(atVertex.begin(), atVertex.end());
     DynamicList<label> to;
     forAll(oldJoints, o)
     {
@@ -220,11 +214,11 @@ void Foam::crackNetwork::setJoints
         to.clear();
         for (const label e : {0, 1})
         {
-            const FixedList<label, 2> key({nodeVertex[jn[e]], -1});
+            const FixedList<label, 3> key({nodeVertex[jn[e]], -1, -1});
             for
             (
-                auto it = std::lower_bound(atVertex.begin(), atVertex.end(), key);
-                it != atVertex.end() && (*it)[0] == key[0];
+                auto it = std::lower_bound(ends_.begin(), ends_.end(), key);
+                it != ends_.end() && (*it)[0] == key[0];
                 ++it
             )
             {
@@ -349,8 +343,9 @@ void Foam::crackNetwork::beginStep
 )
 {
     const label n = cvJoint_.size();
-    V0_.setSize(n); p0_.setSize(n); Gamma_.setSize(n); open0_.setSize(2*n);
+    V0_.setSize(n); Gamma_.setSize(n); open0_.setSize(2*n);
     content0_.setSize(n); eInt0_.setSize(n);
+    V_.setSize(n); L_.setSize(n); p_.setSize(n); n_.setSize(n);
     faceForce_.setSize(n); work_.setSize(n); dLast_.setSize(n);
     const ductNetwork& g = gas_;
     forAll(cvJoint_, i)
@@ -361,7 +356,6 @@ void Foam::crackNetwork::beginStep
         (
             cvJoint_[i], x, V0_[i], L, nrm, open0_[2*i], open0_[2*i + 1]
         );
-        p0_[i] = g.p()[i];
         Gamma_[i] = g.rho()[i]*sqr(g.c()[i])/g.p()[i];
         const ductNetwork::content c = g.contentOf(i);
         content0_[i] = c;
@@ -406,10 +400,10 @@ void Foam::crackNetwork::updateForces
 {
     forAll(cvJoint_, i)
     {
-        scalar V, L, g0, g1;
-        vector2D n;
-        jointGeometry(cvJoint_[i], x, V, L, n, g0, g1);
-        const scalar p = gapPressure(i, V);
+        scalar g0, g1;
+        jointGeometry(cvJoint_[i], x, V_[i], L_[i], n_[i], g0, g1);
+        const scalar p = gapPressure(i, V_[i]);
+        p_[i] = p;
         if (!(p > 0))
         {
             FatalErrorInFunction
@@ -418,7 +412,7 @@ void Foam::crackNetwork::updateForces
                 << work_[i] << " J of work: the solid's sub-steps are too"
                 << " long for it" << exit(FatalError);
         }
-        const vector2D f = -0.5*p*L*n;
+        const vector2D f = -0.5*p*L_[i]*n_[i];
         const vector2D df = f - faceForce_[i];
         faceForce_[i] = f;
         const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
@@ -441,7 +435,7 @@ Foam::scalar Foam::crackNetwork::subSteps::beforeSubStep(femdemSolid& solid)
         first_ = false;
     }
     net_.updateForces(solid.x(), f);
-    return net_.stableSubStep(solid.x(), solid.v(), solid.invMass());
+    return net_.stableSubStep(solid.v(), solid.invMass());
 }
 
 
@@ -453,7 +447,6 @@ void Foam::crackNetwork::subSteps::afterSubStep(const femdemSolid& solid)
 
 Foam::scalar Foam::crackNetwork::stableSubStep
 (
-    const UList<vector2D>& x,
     const UList<vector2D>& v,
     const UList<scalar>& invMass
 ) const
@@ -468,10 +461,9 @@ Foam::scalar Foam::crackNetwork::stableSubStep
     scalar h = GREAT;
     forAll(cvJoint_, i)
     {
-        scalar V, L, g0, g1;
-        vector2D n;
-        jointGeometry(cvJoint_[i], x, V, L, n, g0, g1);
-        const scalar p = max(gapPressure(i, V), scalar(0));
+        // The gap and its gas as the last updateForces found them
+        const scalar V = V_[i], L = L_[i], p = p_[i];
+        const vector2D& n = n_[i];
         const scalar k = Gamma_[i]*p*L*L/(4*V);
         const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
         scalar im = 0;
@@ -558,7 +550,7 @@ Foam::scalar Foam::crackNetwork::endStep
     // opens many times over in a step would take more than the gas has).
     // Sub-steps as its own stability asks (Courant number 0.4), the
     // volumes and the work in equal shares along the step
-    const scalarField VStart(V0_), VEnd(g.V1);
+    VEnd_ = g.V1;
     const label n =
         max(label(1), label(std::ceil(dt/gas_.maxDeltaT(0.4) - 1e-9)));
     const scalar h = dt/n;
@@ -573,8 +565,12 @@ Foam::scalar Foam::crackNetwork::endStep
     mouthMomentum_.setSize(nm); mouthMomentum_ = Zero;
     for (label k = 0; k < n; ++k)
     {
-        g.V0 = VStart + (VEnd - VStart)*(scalar(k)/n);
-        g.V1 = VStart + (VEnd - VStart)*(scalar(k + 1)/n);
+        const scalar s0 = scalar(k)/n, s1 = scalar(k + 1)/n;
+        forAll(VEnd_, i)
+        {
+            g.V0[i] = V0_[i] + s0*(VEnd_[i] - V0_[i]);
+            g.V1[i] = V0_[i] + s1*(VEnd_[i] - V0_[i]);
+        }
         gas_.advance(h);
         forAll(mouths_, m)
         {
