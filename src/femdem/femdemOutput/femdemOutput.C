@@ -101,7 +101,9 @@ void Foam::femdemOutput::writeVtk
     solidVtkWriter& writer,
     const femdemSolid& solid,
     const fileName& vtkDir,
-    const scalar time
+    const scalar time,
+    const UList<word>& jointFieldNames,
+    const UList<scalarList>& jointFieldValues
 )
 {
     // The first step of a run continues the series of an earlier run: a
@@ -142,6 +144,24 @@ void Foam::femdemOutput::writeVtk
         length.append(solid.jointLength0()[j]);
     }
     writer.addLines(pts, edgeList(lines), length, "initialJointLength");
+    forAll(jointFieldValues, k)
+    {
+        const scalarList& all = jointFieldValues[k];
+        if (all.size() != jn.size())
+        {
+            FatalErrorInFunction
+                << "joint field " << jointFieldNames[k] << " has "
+                << all.size() << " values for " << jn.size() << " joints"
+                << exit(FatalError);
+        }
+        scalarList values(lines.size());
+        label i = 0;
+        forAll(jn, j)
+        {
+            if (solid.jointBroken()[j]) values[i++] = all[j];
+        }
+        writer.addLineField(jointFieldNames[k], values);
+    }
     writer.endStep();
 }
 

@@ -94,11 +94,18 @@ void Foam::crackNetwork::jointGeometry
     n = vector2D(d.y(), -d.x())/max(L, VSMALL);
     g0 = (q0 - p0) & n;
     g1 = (q1 - p1) & n;
-    // The trapezoid of the openings (closed ends count as closed): a
-    // sheared gap's quadrilateral can twist to no area while its ends are
-    // open, and the interfaces, as wide as the openings, would then face a
-    // volume they could empty many times in a step
-    area = max(0.5*L*(max(g0, scalar(0)) + max(g1, scalar(0))), L*minAperture_);
+    // The trapezoid of the openings, each end's opening g + minAperture (a
+    // closed crack keeps minAperture; faces pressed further into each other
+    // count as closed), at least L minAperture/2. A sheared gap's
+    // quadrilateral can twist to no area while its ends are open, and the
+    // interfaces, as wide as the openings, would then face a volume they
+    // could empty many times in a step
+    const scalar a = minAperture_;
+    area = max
+    (
+        0.5*L*(max(g0 + a, scalar(0)) + max(g1 + a, scalar(0))),
+        0.5*L*a
+    );
 }
 
 
@@ -178,7 +185,7 @@ void Foam::crackNetwork::setJoints
     mouths_.clear();
     gas_.setSize(cvJoint_.size(), links_.size());
     faceForce_.setSize(cvJoint_.size());
-    faceForce_ = Zero;
+    faceForce_ = FixedList<vector2D, 2>(Zero);
     const scalarField V(gapAreas(x));
 
     // Joints that stay keep their content
@@ -360,10 +367,45 @@ void Foam::crackNetwork::beginStep
         const ductNetwork::content c = g.contentOf(i);
         content0_[i] = c;
         eInt0_[i] = c.mE - 0.5*magSqr(c.mU)/c.m;
-        faceForce_[i] = Zero;
+        faceForce_[i] = FixedList<vector2D, 2>(Zero);
         work_[i] = 0;
         const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
         for (label k = 0; k < 4; ++k) dLast_[i][k] = d[jn[k]];
+    }
+}
+
+
+void Foam::crackNetwork::jointFields
+(
+    const UList<vector2D>& x,
+    DynamicList<word>& names,
+    DynamicList<scalarList>& values
+) const
+{
+    const label nJ = jointCV_.size();
+    const bool two = mixture_.twoPhase();
+    names.append("crackGas");
+    names.append("p");
+    names.append("rho");
+    if (two) names.append("alpha." + mixture_.materials()[0]);
+    names.append("aperture");
+    const label first = values.size();
+    for (label k = first; k < names.size(); ++k)
+    {
+        values.append(scalarList(nJ, Zero));
+    }
+    forAll(cvJoint_, i)
+    {
+        const label j = cvJoint_[i];
+        scalar V, L, g0, g1;
+        vector2D n;
+        jointGeometry(j, x, V, L, n, g0, g1);
+        label k = first;
+        values[k++][j] = 1;
+        values[k++][j] = gas_.p()[i];
+        values[k++][j] = gas_.rho()[i];
+        if (two) values[k++][j] = gas_.alpha1()[i];
+        values[k++][j] = V/max(L, VSMALL);
     }
 }
 
@@ -402,24 +444,31 @@ void Foam::crackNetwork::updateForces
     {
         scalar g0, g1;
         jointGeometry(cvJoint_[i], x, V_[i], L_[i], n_[i], g0, g1);
+        // The gas pushes where the gap has volume to lose: on the nodes of
+        // an end whose opening counts (V = L (o0 + o1)/2 with o = g + a,
+        // a = minAperture, does not change with the nodes of an end pressed
+        // shut beyond a, nor at all at its floor L a/2). A force on faces
+        // pressed into each other would do work with no volume to pay it
+        // from, and drain the gas
+        const scalar a = minAperture_;
+        const bool floored = V_[i] <= 0.5*L_[i]*a*(1 + SMALL);
         const scalar p = gapPressure(i, V_[i]);
-        p_[i] = p;
-        if (!(p > 0))
-        {
-            FatalErrorInFunction
-                << "crackNetwork: the gas of joint " << cvJoint_[i]
-                << " has no pressure left (" << p << " Pa) after doing "
-                << work_[i] << " J of work: the solid's sub-steps are too"
-                << " long for it" << exit(FatalError);
-        }
-        const vector2D f = -0.5*p*L_[i]*n_[i];
-        const vector2D df = f - faceForce_[i];
-        faceForce_[i] = f;
+        // Spent gas (p -> 0 on its isentrope) pushes no more; what it did
+        // is paid at the step's end, where a state the work left
+        // unphysical stops the run (ductNetwork::addEnergy)
+        p_[i] = max(p, scalar(0));
+        const vector2D f = -0.5*p_[i]*L_[i]*n_[i];
         const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
-        nodeForces[jn[0]] += df;
-        nodeForces[jn[1]] += df;
-        nodeForces[jn[2]] -= df;
-        nodeForces[jn[3]] -= df;
+        FixedList<vector2D, 2>& last = faceForce_[i];
+        for (const label e : {0, 1})
+        {
+            const bool open = !floored && (e == 0 ? g0 : g1) + a > 0;
+            const vector2D fe = open ? f : vector2D::zero;
+            const vector2D df = fe - last[e];
+            last[e] = fe;
+            nodeForces[jn[e]] += df;
+            nodeForces[jn[2 + e]] -= df;
+        }
     }
 }
 
@@ -496,7 +545,8 @@ void Foam::crackNetwork::addWork(const UList<vector2D>& d)
         {
             dd[k] = d[jn[k]] - last[k];
         }
-        work_[i] += faceForce_[i] & (dd[0] + dd[1] - dd[2] - dd[3]);
+        const FixedList<vector2D, 2>& f = faceForce_[i];
+        work_[i] += (f[0] & (dd[0] - dd[2])) + (f[1] & (dd[1] - dd[3]));
         for (label k = 0; k < 4; ++k) last[k] = d[jn[k]];
     }
 }
@@ -547,14 +597,20 @@ Foam::scalar Foam::crackNetwork::endStep
         g.Sf[f] = w*(e == 1 ? 1 : -1)*g.axis[a];
     }
     // The gas pays the work its forces did (not p dV: a thin gap that
-    // opens many times over in a step would take more than the gas has).
-    // Sub-steps as its own stability asks (Courant number 0.4), the
-    // volumes and the work in equal shares along the step
+    // opens many times over in a step would take more than the gas has),
+    // all of it first, in its start volume: those forces came from this
+    // content on its isentrope, so they never took more than it holds,
+    // whereas paid along the step, after fluxes had carried gas out of a
+    // small gap, the same work could leave it with none. Then the fluxes
+    // sub-step as their stability asks (Courant number 0.4), the volumes
+    // in equal shares along the step, with no wall work of their own
+    gas_.addEnergy(-work_);
     VEnd_ = g.V1;
     const label n =
         max(label(1), label(std::ceil(dt/gas_.maxDeltaT(0.4) - 1e-9)));
     const scalar h = dt/n;
-    g.wallWork = work_/n;
+    g.wallWork.setSize(work_.size());
+    g.wallWork = 0;
     // A plenum's limit holds for the whole step: a share per sub-step
     scalarField& maxMass = gas_.plenum().maxMass;
     maxMass /= n;

@@ -365,6 +365,8 @@ void Foam::solidVtkWriter::beginStep
     pointFieldComponents_.clear();
     pointFieldValues_.clear();
     stepHasLines_ = false;
+    lineFieldNames_.clear();
+    lineFieldValues_.clear();
 }
 
 
@@ -386,6 +388,24 @@ void Foam::solidVtkWriter::addLines
     lines_ = lines;
     lineValues_ = lineValues;
     lineValueName_ = valueName;
+}
+
+
+void Foam::solidVtkWriter::addLineField
+(
+    const word& name,
+    const UList<scalar>& values
+)
+{
+    if (!stepHasLines_)
+    {
+        FatalErrorInFunction
+            << "line field " << name << " of " << seriesName_
+            << " before addLines" << exit(FatalError);
+    }
+    checkField(name, values.size(), lines_.size(), "line");
+    lineFieldNames_.append(name);
+    lineFieldValues_.append(values);
 }
 
 
@@ -572,7 +592,7 @@ void Foam::solidVtkWriter::endStep()
         writeLines
         (
             linesFile, linePoints_, lines_, lineValues_, format_,
-            lineValueName_
+            lineValueName_, lineFieldNames_, lineFieldValues_
         );
         lineSeries_.append(fileNameInstant(time_, linesFile.name()));
         vtk::seriesWriter::write(linesSeriesFile(), lineSeries_);
@@ -590,7 +610,9 @@ void Foam::solidVtkWriter::writeLines
     const edgeList& lines,
     const UList<scalar>& lineValues,
     const vtk::formatType format,
-    const word& valueName
+    const word& valueName,
+    const UList<word>& fieldNames,
+    const UList<scalarList>& fieldValues
 )
 {
     if (lineValues.size() && lineValues.size() != lines.size())
@@ -598,6 +620,16 @@ void Foam::solidVtkWriter::writeLines
         FatalErrorInFunction
             << lineValues.size() << " values for " << lines.size()
             << " lines in " << file << exit(FatalError);
+    }
+    forAll(fieldValues, k)
+    {
+        if (fieldValues[k].size() != lines.size())
+        {
+            FatalErrorInFunction
+                << fieldValues[k].size() << " values of " << fieldNames[k]
+                << " for " << lines.size() << " lines in " << file
+                << exit(FatalError);
+        }
     }
 
     // Only the points that the lines use, in order of first use
@@ -647,10 +679,17 @@ void Foam::solidVtkWriter::writeLines
     writeLabels(fmt, "connectivity", connectivity);
     writeLabels(fmt, "offsets", offsets);
     fmt.endTag(vtk::fileTag::LINES);
-    if (lineValues.size())
+    if (lineValues.size() || fieldValues.size())
     {
         fmt.beginCellData();
-        writeFloats(fmt, valueName, 1, lineValues);
+        if (lineValues.size())
+        {
+            writeFloats(fmt, valueName, 1, lineValues);
+        }
+        forAll(fieldValues, k)
+        {
+            writeFloats(fmt, fieldNames[k], 1, fieldValues[k]);
+        }
         fmt.endCellData();
     }
     fmt.endPiece();

@@ -88,9 +88,11 @@ TEST(crackNetwork, gasInAGapDrivesTwoBlocksApart)
     // broken and the right block moved 0.1 mm away: air at 10 bar in the
     // gap (closed at its ends) pushes them apart. Each block obeys
     //     M s'' = p0 (g0/g)^gamma H,  g = g0 + 2 s
-    // (the gas adiabatic, the blocks stiff); the gas pays the work its
-    // forces do
-    const scalar H = 0.01, W = 0.02, g0 = 1e-4, rhoS = 2500;
+    // (the gas adiabatic, the blocks stiff), g0 the model's opening: the
+    // faces' separation plus minAperture (1e-6 m by default); the gas pays
+    // the work its forces do
+    const scalar H = 0.01, W = 0.02, sep0 = 1e-4, rhoS = 2500;
+    const scalar g0 = sep0 + 1e-6;
     const scalar p0 = 1e6, rho0 = 10, gamma = 1.4;
     const triangleMesh mesh =
         triangleMesh::rectangle(vector2D(0, 0), vector2D(W, H), 2, 4, "rock");
@@ -117,7 +119,7 @@ TEST(crackNetwork, gasInAGapDrivesTwoBlocksApart)
             (solid.x()[3*t].x() + solid.x()[3*t + 1].x() + solid.x()[3*t + 2].x())/3;
         if (xc > 0.5*W)
         {
-            for (label k = 0; k < 3; ++k) solid.xRef()[3*t + k].x() += g0;
+            for (label k = 0; k < 3; ++k) solid.xRef()[3*t + k].x() += sep0;
         }
     }
     solid.updateStableTimeStep();
@@ -156,8 +158,8 @@ TEST(crackNetwork, gasInAGapDrivesTwoBlocksApart)
         v += dt*(k1v + 2*k2v + 2*k3v + k4v)/6;
     }
 
-    const scalar vL = blockVelocity(solid, 0.5*W + 0.5*g0, false);
-    const scalar vR = blockVelocity(solid, 0.5*W + 0.5*g0, true);
+    const scalar vL = blockVelocity(solid, 0.5*W + 0.5*sep0, false);
+    const scalar vR = blockVelocity(solid, 0.5*W + 0.5*sep0, true);
     const femdemSolid::energyBudget b = solid.energies();
     const scalar stored =
         b.kinetic + b.elastic + b.jointStored + b.fracture + b.damping

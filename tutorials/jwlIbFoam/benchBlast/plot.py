@@ -24,12 +24,10 @@ the solid probes (postProcessing/gauges) with the damage threshold
 f_t c_p/E, the throw (system/throwDict) and an animation (blast.gif; skipped
 with -noAnimation) come from blastFigures; assumptions in README.md.
 """
-import base64
 import json
 import os
 import re
 import sys
-import xml.etree.ElementTree as ET
 
 import matplotlib
 matplotlib.use("Agg")
@@ -41,8 +39,9 @@ sys.path.insert(0, os.path.join(os.environ.get(
     "JWLIBFOAM_TUTORIALS", os.path.join(os.path.dirname(__file__), "..", "..")),
     "jwlIbFoam", "common"))
 from blastPost import (read_field, write_summary, figure, latest_time, log_table,
-                       budget_table, solid_energy)
+                       budget_table, solid_energy, gas_energy, gas_mass)
 import blastFigures as bf
+from blastVtk import read_vtu, read_vtp_lines, read_vtp_line_fields
 
 here = os.path.dirname(os.path.abspath(__file__))
 quick = os.path.exists(os.path.join(here, ".quick"))
@@ -70,6 +69,13 @@ E_ROCK, NU_ROCK, RHO_ROCK, FT_ROCK, C_ROCK, PHI_ROCK = (
     ("E", "nu", "rho", "tensileStrength", "cohesion", "frictionAngle"))
 R_CHARGE = float(re.search(r"radius\s+([0-9.eE+-]+)\s*;",
                            open(_case("system", "setChargeDict")).read()).group(1))
+_ibp = "".join(open(f).read() for f in (_case("constant", "immersedBodyProperties"),
+                                        _case("constant", "immersedBodyProperties.mode"))
+               if os.path.exists(f))
+# A lined hole: the gas kept out of the cracks (no crack venting on the
+# mesh, no crack gas)
+lined = (re.search(r"^\s*crackVenting\s+(false|off|no)\s*;", _ibp, re.M) is not None
+         and re.search(r"^\s*crackGas\s*\{", _ibp, re.M) is None)
 TNT = bf.jwl_explosive(_case("constant", "thermophysicalProperties"), "products")
 FLIGHT_SPEED = 5.0                      # m/s: a fragment "in flight"
 # Kuz-Ram round: plan view of a long hole; assumptions (README.md)
@@ -78,36 +84,6 @@ SPACING = BENCH[1] - BENCH[0]           # m: the block width between fixed sides
 BURDEN = BENCH[3] - HOLE[1]             # m: hole to the free face
 ANFO_ENERGY = 3.7e6                     # J/kg: RWS = 100 (explosive/ANFO energy)
 ROCK_MASS_DESCRIPTION = 50              # Cunningham RMD: massive, no joints
-
-
-# ------------------------------------------------------------------ VTK I/O
-def _decode(arr, ncomp):
-    """Inline base64 DataArray with a UInt64 byte-count header."""
-    raw = base64.b64decode("".join(arr.text.split()))
-    dtype = {"Float32": "<f4", "Float64": "<f8", "Int32": "<i4",
-             "Int64": "<i8", "UInt8": "u1"}[arr.get("type")]
-    n = int(np.frombuffer(raw[:8], "<u8")[0])
-    data = np.frombuffer(raw[8:8 + n], dtype)
-    return data.reshape(-1, ncomp) if ncomp > 1 else data
-
-
-def read_vtu(path):
-    root = ET.parse(path).getroot()
-    out = {}
-    for arr in root.iter("DataArray"):
-        out[arr.get("Name")] = _decode(arr, int(arr.get("NumberOfComponents", 1)))
-    out["triangles"] = out["connectivity"].reshape(-1, 3)
-    return out
-
-
-def read_vtp_lines(path):
-    root = ET.parse(path).getroot()
-    arrs = {a.get("Name"): a for a in root.iter("DataArray")}
-    if "Points" not in arrs or "connectivity" not in arrs:
-        return np.zeros((0, 2, 2))
-    pts = _decode(arrs["Points"], 3)[:, :2]
-    con = _decode(arrs["connectivity"], 1).reshape(-1, 2)
-    return pts[con]
 
 
 def series():
@@ -253,10 +229,11 @@ tP, pP = probe[:, 0], probe[:, 1]
 
 # Budget: gas + solid energy, gas mass
 b = budget_table(os.path.join(here, "postProcessing", "jwlIbFoam", "0", "budget.dat"))
-Etot = b["gasEnergy"] + solid_energy(b)
+Etot = gas_energy(b) + solid_energy(b)
 Echarge = Etot[0]                 # the products' energy dominates (air 0.3 %)
 Egain = (Etot[-1] - Etot[0]) / Echarge
-massDrift = abs(b["gasMass"][-1] - b["gasMass"][0]) / b["gasMass"][0]
+mGas = gas_mass(b)
+massDrift = abs(mGas[-1] - mGas[0]) / mGas[0]
 tab = log_table(os.path.join(here, "log.jwlIbFoam"))
 
 # ---------------------------------------------------------------- figures
@@ -310,6 +287,95 @@ axs[0].set_title(f"gas pressure, t = {float(tl) * 1e6:.0f} us")
 axs[1].set_title("detonation products venting into the cracks")
 fig.tight_layout()
 fig.savefig(os.path.join(here, "gasVenting.png"), dpi=130)
+
+# Products along the cracks, at the write time nearest 0.2 ms (the end in
+# quick mode): gas cells (cracks the mesh resolves) and the crack gas of the
+# broken joints (crackGas, VTK/cracks_<i>.vtp) holding products above
+# ALPHA_VENT at R_VENT or more from the hole centre; their directions about
+# the hole, grouped where less than VENT_GAP degrees apart, are the radial
+# cracks the products have run along
+ALPHA_VENT, R_VENT, VENT_GAP = 0.01, 5 * R_HOLE, 10.0
+T_VENT = 2e-4
+
+
+def time_dir_near(t):
+    times = [d for d in os.listdir(here) if re.fullmatch(r"[0-9.eE+-]+", d)
+             and os.path.exists(os.path.join(here, d, "alpha.products"))]
+    return min(times, key=lambda d: abs(float(d) - t))
+
+
+def vent_directions(angles):
+    """Groups of directions (degrees) less than VENT_GAP apart, on the circle"""
+    a = np.sort(np.asarray(angles) % 360)
+    if a.size == 0:
+        return 0
+    gaps = np.diff(np.append(a, a[0] + 360))
+    return max(1, int((gaps > VENT_GAP).sum()))
+
+
+iVent = int(np.argmin([abs(t - min(T_VENT, steps[-1][0])) for t, _ in steps]))
+tVent = steps[iVent][0]
+dVent = time_dir_near(tVent)
+xc = FLUID[0] + (np.arange(nx) + 0.5) * (FLUID[1] - FLUID[0]) / nx
+yc = FLUID[2] + (np.arange(ny) + 0.5) * (FLUID[3] - FLUID[2]) / ny
+XC, YC = np.meshgrid(xc, yc)
+apV = read_field(here, dVent, "alpha.products", nx * ny).reshape(ny, nx)
+phiV = read_field(here, dVent, "fluidFraction", nx * ny).reshape(ny, nx)
+rC = np.hypot(XC - HOLE[0], YC - HOLE[1])
+cellsVent = (phiV > 0) & (apV > ALPHA_VENT) & (rC >= R_VENT)
+ventAngles = list(np.degrees(np.arctan2(YC - HOLE[1], XC - HOLE[0]))[cellsVent])
+crackFile = lambda i: os.path.join(here, "VTK", f"cracks_{i}.vtp")
+crackGasOn = "crackGas" in read_vtp_line_fields(crackFile(iVent))
+netAlphaName = "alpha.products"
+netVentReach = 0.0
+if crackGasOn:
+    seg = read_vtp_lines(crackFile(iVent))
+    cf = read_vtp_line_fields(crackFile(iVent))
+    mid = seg.mean(axis=1)
+    rN = np.hypot(mid[:, 0] - HOLE[0], mid[:, 1] - HOLE[1])
+    inNet = cf["crackGas"] > 0.5
+    withProducts = inNet & (cf[netAlphaName] > ALPHA_VENT)
+    netVentReach = rN[withProducts].max() if withProducts.any() else 0.0
+    sel = withProducts & (rN >= R_VENT)
+    ventAngles += list(np.degrees(np.arctan2(mid[sel, 1] - HOLE[1], mid[sel, 0] - HOLE[0])))
+    # Crack gas pressure over the written times: the highest, and the mean
+    # over the crack gas's volume (aperture x length)
+    tN, pMaxN, pMeanN, nNet = [], [], [], []
+    for i, (t, _) in enumerate(steps):
+        f = read_vtp_line_fields(crackFile(i))
+        if "crackGas" not in f:
+            continue
+        on = f["crackGas"] > 0.5
+        sg = read_vtp_lines(crackFile(i))
+        vol = f["aperture"] * np.hypot(*(sg[:, 1] - sg[:, 0]).T)
+        tN.append(t)
+        nNet.append(on.sum())
+        pMaxN.append(f["p"][on].max() if on.any() else 0.0)
+        pMeanN.append((f["p"] * vol)[on].sum() / vol[on].sum() if on.any() else 0.0)
+    fig, axs = plt.subplots(1, 2, figsize=(11, 4))
+    ax = axs[0]
+    ax.semilogy(np.array(tN) * 1e6, np.maximum(pMaxN, 1), "r-", label="highest")
+    ax.semilogy(np.array(tN) * 1e6, np.maximum(pMeanN, 1), "b-", label="volume mean")
+    ax.set_xlabel("t [us]"); ax.set_ylabel("crack gas pressure [Pa]")
+    ax.legend(); ax.grid(True, which="both", alpha=0.3)
+    ax.set_title(f"Gas in the cracks narrower than a cell ({nNet[-1]} joints at the end)",
+                 fontsize=9)
+    ax = axs[1]
+    seg = read_vtp_lines(crackFile(iVent))
+    lc = LineCollection(seg[inNet], array=cf[netAlphaName][inNet], cmap="viridis",
+                        linewidths=1.2)
+    lc.set_clim(0, 1)
+    ax.add_collection(lc)
+    ax.add_collection(LineCollection(seg[~inNet], colors="0.7", linewidths=0.6))
+    ax.add_patch(plt.Circle(HOLE, R_VENT, fill=False, ls="--", color="k", lw=0.6))
+    fig.colorbar(lc, ax=ax, label="products volume fraction in the crack gas")
+    ax.set_xlim(BENCH[0], BENCH[1]); ax.set_ylim(BENCH[2], BENCH[3])
+    ax.set_aspect("equal")
+    ax.set_title(f"t = {tVent * 1e6:.0f} us; dashed: 5 hole radii; grey: cracks open "
+                 "to the mesh", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(here, "crackGas.png"), dpi=130)
+ventCracks = vent_directions(ventAngles)
 
 fig, ax = plt.subplots(figsize=(6, 4))
 ax.semilogy(tP * 1e6, pP, "r-")
@@ -454,5 +520,12 @@ figs = [
     # gained 1 - 2 %, README)
     figure("energy gained by gas + solid / initial gas energy (cut cells:"
            " includes the gas leaving through the outlet)", Egain, 0.0, 1e-2),
+    figure(f"products (> {ALPHA_VENT:g}) at >= 5 hole radii at t = {tVent:g} s: "
+           "radial cracks", ventCracks),
+    figure("products in the crack gas: farthest from the hole centre [m]", netVentReach),
+    figure("lined hole (crackVenting false, no crackGas)", float(lined)),
 ]
+if crackGasOn:
+    figs += [figure("crack gas: joints at the end", nNet[-1]),
+             figure("crack gas: highest pressure over the run [Pa]", max(pMaxN))]
 write_summary(os.path.join(here, "summary.json"), "jwlIbFoam/benchBlast", figs)

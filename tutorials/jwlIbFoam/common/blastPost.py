@@ -101,6 +101,28 @@ def budget_table(path):
     return {n: data[:, i] for i, n in enumerate(names)}
 
 
+def gas_mass(b):
+    """Gas mass of a budget table: the mesh's, plus the crack gas's
+    (crackGas) with what the network could not hand back and less the
+    ambient gas it created for isolated joints"""
+    m = b["gasMass"].copy()
+    if "crackGasMass" in b:
+        m += (b["crackGasMass"] + b["crackGasLostMass"]
+              - b["crackGasCreatedMass"])
+    return m
+
+
+def gas_energy(b):
+    """Gas energy of a budget table: the mesh's, plus the crack gas's
+    (crackGas) with what the network could not hand back and less the
+    ambient gas it created for isolated joints"""
+    E = b["gasEnergy"].copy()
+    if "crackGasEnergy" in b:
+        E += (b["crackGasEnergy"] + b["crackGasLostEnergy"]
+              - b["crackGasCreatedEnergy"])
+    return E
+
+
 def solid_energy(b):
     """Solid energy of a budget table: kinetic, elastic, stored and
     dissipated, minus the work of gravity"""
