@@ -772,10 +772,12 @@ void Foam::blastFluidSolver::mergeBadCells
         {
             return;
         }
+        burnLinks_ = false;
         redistribute
         (
             phiField, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1, &bad, true
         );
+        burnLinks_ = true;
     }
 }
 
