@@ -26,8 +26,9 @@ system/femdemMeshDict in the same order):
   holes fired before compress it by a few per cent, and the spread, which
   goes mostly into the unreacted charges, changes it by 5e-4, README);
 - the programmed burn's limit: products from other holes in this hole's air
-  gap before t0 (alpha.products at the gap probe; the air starts at
-  alphaMin 1e-6), checked below ALPHA_ARRIVED;
+  gap before t0 (the rise of alpha.products at the gap probe from its start
+  value: alphaMin 1e-6 in the air, more where a coarse mesh puts part of the
+  charge in the probe's cell), checked below ALPHA_ARRIVED;
 - burden motion: the face speed in front of the previous hole when this hole
   fires (gauges on the face).
 """
@@ -52,7 +53,8 @@ from blastVtk import read_vtu, read_vtp_lines  # noqa: E402
 
 quick = os.path.exists(os.path.join(here, ".quick"))
 ROUNDS = ("delayed", "instantaneous")
-FLUID = (-0.3, 0.3, -0.3, 0.2)  # system/blockMeshDict
+field = os.path.exists(os.path.join(here, ".field"))
+PREFIX = "field_" if field else ""   # the pictures of Allrun -field
 P0 = 101325.0
 FIRE_PRESSURE = 1e7             # Pa: a charge has fired (its products: GPa)
 INERT_TOL = 1e-6                # relative pressure change before t0
@@ -151,7 +153,9 @@ def firing(case, centres, t0, tSpread):
         unfired = change[before].max() if before.any() else 0.0
         clean = before & (tP < tSpread * (1 - 1e-9))  # probe times: 12 digits
         inert = change[clean].max() if clean.any() else 0.0
-        gapAlpha = alpha[before, nH + k].max() if before.any() else 0.0
+        # (its rise from the start: a gap narrower than a cell shares the
+        # probe's cell with the charge)
+        gapAlpha = (alpha[before, nH + k] - alpha[0, nH + k]).max() if before.any() else 0.0
         cells = (np.abs(light - t0[k]) <= 1e-12 * max(1.0, t0[k])) & (burnTime > 0)
         Fmax, nWrites = 0.0, 0
         for t, d in written_times(case):
@@ -165,11 +169,18 @@ def firing(case, centres, t0, tSpread):
     return tP, p, rows
 
 
+def fluid_box(case):
+    """(x0, x1, y0, y1) of the fluid mesh (its points)"""
+    text = open(os.path.join(case, "constant", "polyMesh", "points")).read()
+    xy = np.array(re.findall(r"\(([-+0-9.eE]+) ([-+0-9.eE]+) [-+0-9.eE]+\)", text), float)
+    return xy[:, 0].min(), xy[:, 0].max(), xy[:, 1].min(), xy[:, 1].max()
+
+
 def products_margin(case, centres, rHole, t0):
     """Per hole: the closest approach of products (alpha.products > 1e-3 in
     gas cells outside this hole) to this hole's wall at the written times
     before its t0 (inf: none written); the uniform blockMesh grid"""
-    x0, x1, y0, y1 = FLUID
+    x0, x1, y0, y1 = fluid_box(case)
     nx = int(bf.foam_entry(os.path.join(case, "system", "blockMeshDict"), "nx"))
     ny = int(bf.foam_entry(os.path.join(case, "system", "blockMeshDict"), "ny"))
     X, Y = np.meshgrid(x0 + (np.arange(nx) + 0.5) * (x1 - x0) / nx,
@@ -266,7 +277,7 @@ ax.set_xlabel("equivalent size sqrt(4A/pi) [mm]"); ax.set_ylabel("passing by mas
 ax.set_ylim(0, 100); ax.legend(fontsize=7, loc="upper left")
 ax.set_title("Fragment curves (dots; Swebrec solid, Rosin-Rammler dotted)", fontsize=8)
 fig.tight_layout()
-fig.savefig(os.path.join(here, "delayedRound.png"), dpi=120)
+fig.savefig(os.path.join(here, PREFIX + "delayedRound.png"), dpi=120)
 
 fig, axs = plt.subplots(1, 2, figsize=(12, 4.4))
 for rnd, ls in zip(ROUNDS, ("-", "--")):
@@ -285,7 +296,7 @@ axs[0].legend(fontsize=6); axs[0].set_title("Firing (dotted: delayed initiation 
 axs[1].set_xlabel("t [us]"); axs[1].set_ylabel("face velocity v_y [m/s]")
 axs[1].legend(fontsize=6); axs[1].set_title("Burden motion: free face in front of each hole", fontsize=9)
 fig.tight_layout()
-fig.savefig(os.path.join(here, "firing.png"), dpi=120)
+fig.savefig(os.path.join(here, PREFIX + "firing.png"), dpi=120)
 
 # ---------------------------------------------------------------- summary
 figs = []
@@ -330,7 +341,7 @@ for rnd in ROUNDS:
                 figure(f"{h} max burnFraction in its {row['nCells']} lit cells at the "
                        f"{row['nWrites']} writes before t0", row["Fmax"], 0, 0,
                        error=row["Fmax"]),
-                figure(f"{h} products fraction in its air gap before t0 (air: 1e-6)",
+                figure(f"{h} products fraction rise in its air gap before t0 (air: 1e-6)",
                        row["gapAlpha"], 0, ALPHA_ARRIVED, error=row["gapAlpha"]),
                 figure(f"{h} closest products (alpha > 1e-3) to its wall at the writes "
                        f"before t0 [m] (> 0; 1e9: none outside the holes)",
