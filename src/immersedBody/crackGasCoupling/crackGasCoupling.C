@@ -41,9 +41,11 @@ Foam::crackGasCoupling::crackGasCoupling
     if (Pstream::parRun())
     {
         FatalIOErrorInFunction(dict)
-            << "crackGas runs serial only for now (the replicated network's"
-            << " parallel exchange is not verified yet); remove the"
-            << " sub-dictionary 'crackGas' for a parallel run"
+            << "crackGas runs serial only for now (on 2 ranks the run"
+            << " finishes but its crack gas differs from serial by several"
+            << " per cent: a mouth at a processor boundary gets another"
+            << " plenum cell); remove the sub-dictionary 'crackGas' for a"
+            << " parallel run"
             << exit(FatalIOError);
     }
 }
@@ -358,7 +360,10 @@ void Foam::crackGasCoupling::exchange(blastFluidSolver& fluid)
     }
     givenCell_.clear();
     given_.clear();
-    if (cells.size())
+    // addContent recomputes the primitives (reductions, processor
+    // patches): every rank calls it when any rank has cells, also one
+    // without (a collective called on some ranks only hung the run)
+    if (returnReduce(cells.size(), sumOp<label>()))
     {
         fluid.addContent(cells, dm, dmU, dE, dm1);
     }
