@@ -6,6 +6,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "crackGasCoupling.H"
+#include "syncTools.H"
+#include "processorPolyPatch.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -38,31 +40,68 @@ Foam::crackGasCoupling::crackGasCoupling
                 << valid << exit(FatalIOError);
         }
     }
-    if (Pstream::parRun())
-    {
-        FatalIOErrorInFunction(dict)
-            << "crackGas runs serial only for now (on 2 ranks the run"
-            << " finishes but its crack gas differs from serial by several"
-            << " per cent: a mouth at a processor boundary gets another"
-            << " plenum cell); remove the sub-dictionary 'crackGas' for a"
-            << " parallel run"
-            << exit(FatalIOError);
-    }
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::crackGasCoupling::firstOwners(labelList& choice)
+Foam::vector Foam::crackGasCoupling::cellKey
+(
+    const scalarField* phi,
+    const label c
+) const
 {
-    // Each rank's choice (a rank that has none gives a large number); the
-    // smallest wins on every rank, so that the replicated network stays the
-    // same everywhere (the same rule serial: the first of the candidates)
+    const point& C = mesh_.C()[c];
+    return vector((phi ? (*phi)[c] : 1)*mesh_.V()[c], C.x(), C.y());
+}
+
+
+void Foam::crackGasCoupling::bestOverRanks(List<vector>& keys)
+{
     if (Pstream::parRun())
     {
-        Pstream::listCombineGather(choice, minEqOp<label>());
-        Pstream::listCombineScatter(choice);
+        Pstream::listCombineGather(keys, betterOp());
+        Pstream::listCombineScatter(keys);
     }
+}
+
+
+Foam::vector Foam::crackGasCoupling::containingKey
+(
+    const vector2D& pt,
+    const scalarField* phi
+)
+{
+    found_.clear();
+    projection_.findCells(pt, found_);
+    vector best = noCell();
+    for (const label c : found_)
+    {
+        if (phi && !((*phi)[c] > 0)) continue;
+        const vector k = cellKey(phi, c);
+        if (better(k, best)) best = k;
+    }
+    return best;
+}
+
+
+Foam::label Foam::crackGasCoupling::cellOfKey(const vector& key) const
+{
+    // The centroid of a convex cell lies inside it and no other cell
+    return key.x() < 0 ? -1 : projection_.findCell(vector2D(key.y(), key.z()));
+}
+
+
+void Foam::crackGasCoupling::swapNeighbours(const scalarField* phi)
+{
+    if (!Pstream::parRun()) return;
+    scalarField gas(mesh_.V().field());
+    if (phi) gas *= *phi;
+    syncTools::swapBoundaryCellList(mesh_, gas, gasNbr_);
+    syncTools::swapBoundaryCellPositions
+    (
+        mesh_, mesh_.C().primitiveField(), centreNbr_
+    );
 }
 
 
@@ -87,45 +126,41 @@ void Foam::crackGasCoupling::setNetworkJoints
     net_.setJoints(joints_, x, &released_);
     // Handed over: into the fluid cell with gas at the joint's midpoint,
     // else at one of its nodes (the crack opened to the gas runs through
-    // them); in parallel the first of these points that a rank holds, and
-    // the lowest such rank
+    // them); of the cells holding the first such point, the best (most
+    // gas, then lowest centre): the same cell on any decomposition
     const jointTopology& topo = view.view().topology();
     const scalarField* phi = fluid.fluidFractionField();
-    const label nP = Pstream::nProcs(), me = Pstream::myProcNo();
-    labelList choice(released_.size(), 5*nP);
-    labelList cell(released_.size(), -1);
+    const label nPts = 5;
+    cellKeys_.setSize(nPts*released_.size());
     forAll(released_, r)
     {
         const jointNodeList& jn = topo.jointNodes()[released_[r].first];
-        const vector2D at[5] =
+        const vector2D at[nPts] =
         {
             0.25*(x[jn[0]] + x[jn[1]] + x[jn[2]] + x[jn[3]]),
             x[jn[0]], x[jn[1]], x[jn[2]], x[jn[3]]
         };
-        for (label k = 0; k < 5; ++k)
+        for (label k = 0; k < nPts; ++k)
         {
-            const label ci = projection_.findCell(at[k]);
-            if (ci >= 0 && (!phi || (*phi)[ci] > 0))
-            {
-                cell[r] = ci;
-                choice[r] = k*nP + me;
-                break;
-            }
+            cellKeys_[nPts*r + k] = containingKey(at[k], phi);
         }
     }
-    labelList mine(choice);
-    firstOwners(choice);
+    bestOverRanks(cellKeys_);
     forAll(released_, r)
     {
         const ductNetwork::content& c = released_[r].second;
-        if (choice[r] == 5*nP)
+        label k = 0;
+        while (k < nPts && cellKeys_[nPts*r + k].x() < 0) ++k;
+        if (k == nPts)
         {
             lostMass_ += c.m;
             lostEnergy_ += c.mE;
+            continue;
         }
-        else if (choice[r] == mine[r])
+        const label ci = cellOfKey(cellKeys_[nPts*r + k]);
+        if (ci >= 0)
         {
-            givenCell_.append(cell[r]);
+            givenCell_.append(ci);
             given_.append(c);
         }
     }
@@ -150,11 +185,9 @@ void Foam::crackGasCoupling::setMouths
     }
     const labelList& pointOfNode = cv.pointOfNode();
     const scalarField* phi = fluid.fluidFractionField();
-    const label nP = Pstream::nProcs(), me = Pstream::myProcNo();
     DynamicList<FixedList<label, 2>>& ends = candidates_;
-    DynamicList<label>& cell = candidateCell_;
     ends.clear();
-    cell.clear();
+    candidatePoint_.clear();
     forAll(net_.joints(), i)
     {
         const jointNodeList& jn = cv.topology().jointNodes()[net_.joints()[i]];
@@ -162,25 +195,34 @@ void Foam::crackGasCoupling::setMouths
         {
             const label pt = pointOfNode[jn[e]];
             if (!onOutline_[pt]) continue;
-            label c = plenumCell(fluid, projection_.findCell(cv.points()[pt]));
-            if (c >= 0 && phi && !((*phi)[c] > 0)) c = -1;
             ends.append(FixedList<label, 2>({i, e}));
-            cell.append(c);
+            candidatePoint_.append(cv.points()[pt]);
         }
     }
-    labelList choice(ends.size());
+    // The best cell holding each end (over all ranks), then the plenum
+    // that cell's rank chooses for it (its neighbours across processor
+    // faces included), then the rank that holds the plenum takes the mouth
+    cellKeys_.setSize(ends.size());
     forAll(ends, k)
     {
-        choice[k] = cell[k] >= 0 ? me : nP;
+        cellKeys_[k] = containingKey(candidatePoint_[k], phi);
     }
-    firstOwners(choice);
+    bestOverRanks(cellKeys_);
+    swapNeighbours(phi);
+    plenumKeys_.setSize(ends.size());
+    forAll(ends, k)
+    {
+        const label c = cellOfKey(cellKeys_[k]);
+        plenumKeys_[k] = c >= 0 ? plenumKey(fluid, c) : noCell();
+    }
+    bestOverRanks(plenumKeys_);
     mouths_.clear();
     mouthCell_.clear();
     forAll(ends, k)
     {
-        if (choice[k] == nP) continue;
+        if (plenumKeys_[k].x() < 0) continue;
         mouths_.append(ends[k]);
-        mouthCell_.append(choice[k] == me ? cell[k] : -1);
+        mouthCell_.append(cellOfKey(plenumKeys_[k]));
     }
     net_.setMouths(mouths_);
 }
@@ -255,7 +297,7 @@ void Foam::crackGasCoupling::beginStep
 }
 
 
-Foam::label Foam::crackGasCoupling::plenumCell
+Foam::vector Foam::crackGasCoupling::plenumKey
 (
     const blastFluidSolver& fluid,
     const label c
@@ -264,24 +306,39 @@ Foam::label Foam::crackGasCoupling::plenumCell
     // A small cut cell is a poor plenum: a sliver's state follows its
     // neighbours' (the small-cell treatment), and the little gas it holds
     // would cap the mouth. Its neighbour through an open face with the
-    // most gas stands for it
+    // most gas stands for it (ties: the lowest centre, as any rank sees it)
     const scalarField* phi = fluid.fluidFractionField();
-    if (c < 0 || !phi || (*phi)[c] >= 0.5) return c;
-    const scalarField& ap = fluid.faceApertures();
-    const scalarField& V = mesh_.V();
-    label best = c;
-    scalar most = (*phi)[c]*V[c];
+    const vector own = cellKey(phi, c);
+    if (!phi || (*phi)[c] >= 0.5) return own;
+    const label nInternal = mesh_.nInternalFaces();
+    vector best = own;
     for (const label f : mesh_.cells()[c])
     {
-        if (f >= mesh_.nInternalFaces() || !(ap[f] > 0)) continue;
-        const label nb =
-            mesh_.faceOwner()[f] == c
-          ? mesh_.faceNeighbour()[f] : mesh_.faceOwner()[f];
-        if ((*phi)[nb]*V[nb] > most)
+        if (!(fluid.meshFaceAperture(f) > 0)) continue;
+        vector k;
+        if (f < nInternal)
         {
-            best = nb;
-            most = (*phi)[nb]*V[nb];
+            const label nb =
+                mesh_.faceOwner()[f] == c
+              ? mesh_.faceNeighbour()[f] : mesh_.faceOwner()[f];
+            k = cellKey(phi, nb);
         }
+        else if
+        (
+            isA<processorPolyPatch>
+            (
+                mesh_.boundaryMesh()[mesh_.boundaryMesh().whichPatch(f)]
+            )
+        )
+        {
+            const label b = f - nInternal;
+            k = vector(gasNbr_[b], centreNbr_[b].x(), centreNbr_[b].y());
+        }
+        else
+        {
+            continue;
+        }
+        if (k.x() > own.x() && better(k, best)) best = k;
     }
     return best;
 }

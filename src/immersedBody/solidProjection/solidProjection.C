@@ -476,4 +476,31 @@ Foam::label Foam::solidProjection::findCell(const vector2D& pt) const
 }
 
 
+void Foam::solidProjection::findCells
+(
+    const vector2D& pt,
+    DynamicList<label>& cells
+) const
+{
+    index_.forEachCandidate
+    (
+        pt, pt,
+        [&](const label celli)
+        {
+            // (a cell may be visited more than once by the bins)
+            if (cells.found(celli)) return;
+            const label start = cellStart_[celli], end = cellStart_[celli + 1];
+            for (label k = start; k < end; ++k)
+            {
+                const vector2D& a = cellVertices_[k];
+                const vector2D& b = cellVertices_[k + 1 < end ? k + 1 : start];
+                const vector2D ab = b - a, ap = pt - a;
+                if (ab.x()*ap.y() - ab.y()*ap.x() < 0) return;
+            }
+            cells.append(celli);
+        }
+    );
+}
+
+
 // ************************************************************************* //
