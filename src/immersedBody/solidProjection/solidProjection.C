@@ -451,6 +451,26 @@ bool Foam::solidProjection::clipSegment
 }
 
 
+bool Foam::solidProjection::cellContains
+(
+    const label celli,
+    const vector2D& pt
+) const
+{
+    // Inside a counter-clockwise convex polygon: left of every edge (on an
+    // edge counts as inside)
+    const label start = cellStart_[celli], end = cellStart_[celli + 1];
+    for (label k = start; k < end; ++k)
+    {
+        const vector2D& a = cellVertices_[k];
+        const vector2D& b = cellVertices_[k + 1 < end ? k + 1 : start];
+        const vector2D ab = b - a, ap = pt - a;
+        if (ab.x()*ap.y() - ab.y()*ap.x() < 0) return false;
+    }
+    return true;
+}
+
+
 Foam::label Foam::solidProjection::findCell(const vector2D& pt) const
 {
     label found = -1;
@@ -459,17 +479,7 @@ Foam::label Foam::solidProjection::findCell(const vector2D& pt) const
         pt, pt,
         [&](const label celli)
         {
-            if (found >= 0) return;
-            // Inside a counter-clockwise convex polygon: left of every edge
-            const label start = cellStart_[celli], end = cellStart_[celli + 1];
-            for (label k = start; k < end; ++k)
-            {
-                const vector2D& a = cellVertices_[k];
-                const vector2D& b = cellVertices_[k + 1 < end ? k + 1 : start];
-                const vector2D ab = b - a, ap = pt - a;
-                if (ab.x()*ap.y() - ab.y()*ap.x() < 0) return;
-            }
-            found = celli;
+            if (found < 0 && cellContains(celli, pt)) found = celli;
         }
     );
     return found;
@@ -488,16 +498,10 @@ void Foam::solidProjection::findCells
         [&](const label celli)
         {
             // (a cell may be visited more than once by the bins)
-            if (cells.found(celli)) return;
-            const label start = cellStart_[celli], end = cellStart_[celli + 1];
-            for (label k = start; k < end; ++k)
+            if (!cells.found(celli) && cellContains(celli, pt))
             {
-                const vector2D& a = cellVertices_[k];
-                const vector2D& b = cellVertices_[k + 1 < end ? k + 1 : start];
-                const vector2D ab = b - a, ap = pt - a;
-                if (ab.x()*ap.y() - ab.y()*ap.x() < 0) return;
+                cells.append(celli);
             }
-            cells.append(celli);
         }
     );
 }
