@@ -120,6 +120,10 @@ void Foam::crackGasCoupling::setNetworkJoints
     {
         if (broken[j] && !open[j]) joints_.append(j);
     }
+    // No void where a crack open to the gas meets the others (its gas is
+    // the mesh's); the voids change with the open joints even when the
+    // network's joints do not
+    net_.setOpenJoints(open);
     if (joints_ == net_.joints()) return;
 
     released_.clear();

@@ -50,6 +50,7 @@ Foam::crackNetwork::crackNetwork
     removedEnergy_(0),
     nGasSubSteps_(0)
 {
+    setVertexFans();
     if (!(minAperture_ > 0) || !std::isfinite(minAperture_))
     {
         FatalIOErrorInFunction(dict)
@@ -118,7 +119,188 @@ Foam::scalarField Foam::crackNetwork::gapAreas(const UList<vector2D>& x) const
         vector2D n;
         jointGeometry(cvJoint_[i], x, V[i], L, n, g0, g1);
     }
+    addVoidShares(x, V);
     return V;
+}
+
+
+void Foam::crackNetwork::setVertexFans()
+{
+    const labelList& nodeVertex = topo_.nodeVertex();
+    const List<vector2D>& X0 = topo_.initialPoints();
+    const label nV = X0.size();
+    vertexOnBoundary_.setSize(nV);
+    vertexOnBoundary_ = false;
+    forAll(topo_.boundaryTriangle(), b)
+    {
+        const label t = topo_.boundaryTriangle()[b];
+        const label k = topo_.boundaryEdge()[b];
+        vertexOnBoundary_[nodeVertex[jointTopology::node(t, k)]] = true;
+        vertexOnBoundary_[nodeVertex[jointTopology::node(t, (k + 1)%3)]] = true;
+    }
+    vertexOpen_.setSize(nV);
+    vertexOpen_ = false;
+
+    // The nodes of each vertex, in the order of their triangles' centroids
+    // around it (counter-clockwise): the corners of the void there, in the
+    // order that gives a void opening between separating triangles a
+    // positive area
+    vertexNodeStart_.setSize(nV + 1);
+    vertexNodeStart_ = 0;
+    forAll(nodeVertex, n) ++vertexNodeStart_[nodeVertex[n] + 1];
+    for (label v = 0; v < nV; ++v)
+    {
+        vertexNodeStart_[v + 1] += vertexNodeStart_[v];
+    }
+    vertexNode_.setSize(nodeVertex.size());
+    labelList fillAt(SubList<label>(vertexNodeStart_, nV));
+    forAll(nodeVertex, n) vertexNode_[fillAt[nodeVertex[n]]++] = n;
+    DynamicList<std::pair<scalar, label>> fan;
+    for (label v = 0; v < nV; ++v)
+    {
+        fan.clear();
+        for (label k = vertexNodeStart_[v]; k < vertexNodeStart_[v + 1]; ++k)
+        {
+            const label n = vertexNode_[k], t = n/3;
+            const vector2D c =
+                (
+                    X0[nodeVertex[3*t]] + X0[nodeVertex[3*t + 1]]
+                  + X0[nodeVertex[3*t + 2]]
+                )/3 - X0[v];
+            fan.append({std::atan2(c.y(), c.x()), n});
+        }
+        std::sort(fan.begin(), fan.end());
+        forAll(fan, i) vertexNode_[vertexNodeStart_[v] + i] = fan[i].second;
+    }
+}
+
+
+void Foam::crackNetwork::setVoids()
+{
+    // A void where m >= 2 cracks of the network meet at a vertex inside the
+    // solid: not on its outline (the void would open onto the outside) and
+    // touched by no joint open to the fluid mesh (its gas is the mesh's)
+    DynamicList<label> vertex, cvStart(1, 0), cv, cornerStart(1, 0);
+    for (label a = 0; a < ends_.size(); )
+    {
+        label b = a;
+        while (b < ends_.size() && ends_[b][0] == ends_[a][0]) ++b;
+        const label v = ends_[a][0];
+        if (b - a >= 2 && !vertexOnBoundary_[v] && !vertexOpen_[v])
+        {
+            vertex.append(v);
+            for (label k = a; k < b; ++k) cv.append(ends_[k][1]);
+            cvStart.append(cv.size());
+            cornerStart.append
+            (
+                cornerStart.last()
+              + vertexNodeStart_[v + 1] - vertexNodeStart_[v]
+            );
+        }
+        a = b;
+    }
+    voidVertex_.transfer(vertex);
+    voidCVStart_.transfer(cvStart);
+    voidCV_.transfer(cv);
+    voidCornerStart_.transfer(cornerStart);
+    const label nc = voidCornerStart_.last();
+    voidArea_.setSize(voidVertex_.size());
+    voidArea_ = 0;
+    voidGrad_.setSize(nc);
+    voidGrad_ = Zero;
+    voidForce_.setSize(nc);
+    voidForce_ = Zero;
+    voidDLast_.setSize(nc);
+    voidDLast_ = Zero;
+}
+
+
+Foam::scalar Foam::crackNetwork::voidArea
+(
+    const label k,
+    const UList<vector2D>& x,
+    vector2D* grad
+) const
+{
+    // The polygon of the corners (shoelace, about the first corner). Less
+    // minAperture^2, so that the round-off area of the corners of a
+    // straight crack through the vertex (two rows of coincident corners)
+    // counts for nothing and pushes nothing; the gradient of that area is
+    // the force per unit pressure on each corner (the volume's gradient,
+    // as for the gaps: the gas pays exactly the work it does)
+    const label v = voidVertex_[k];
+    const label s = vertexNodeStart_[v];
+    const label K = vertexNodeStart_[v + 1] - s;
+    const vector2D& o = x[vertexNode_[s]];
+    scalar twiceA = 0;
+    for (label i = 0; i < K; ++i)
+    {
+        const vector2D a = x[vertexNode_[s + i]] - o;
+        const vector2D b = x[vertexNode_[s + (i + 1)%K]] - o;
+        twiceA += a.x()*b.y() - a.y()*b.x();
+    }
+    const scalar A = 0.5*twiceA - sqr(minAperture_);
+    if (grad)
+    {
+        for (label i = 0; i < K; ++i)
+        {
+            const vector2D& prev = x[vertexNode_[s + (i + K - 1)%K]];
+            const vector2D& next = x[vertexNode_[s + (i + 1)%K]];
+            grad[i] =
+                A > 0
+              ? 0.5*vector2D(next.y() - prev.y(), prev.x() - next.x())
+              : vector2D::zero;
+        }
+    }
+    return max(A, scalar(0));
+}
+
+
+void Foam::crackNetwork::addVoidShares
+(
+    const UList<vector2D>& x,
+    scalarField& V
+) const
+{
+    forAll(voidVertex_, k)
+    {
+        const scalar A = voidArea(k, x);
+        const label c0 = voidCVStart_[k], c1 = voidCVStart_[k + 1];
+        for (label c = c0; c < c1; ++c) V[voidCV_[c]] += A/(c1 - c0);
+    }
+}
+
+
+Foam::scalar Foam::crackNetwork::voidsArea(const UList<vector2D>& x) const
+{
+    scalar A = 0;
+    forAll(voidVertex_, k) A += voidArea(k, x);
+    return A;
+}
+
+
+bool Foam::crackNetwork::setOpenJoints(const boolList& open)
+{
+    if (open.size() != topo_.nJoints())
+    {
+        FatalErrorInFunction
+            << "crackNetwork: " << open.size() << " open flags for "
+            << topo_.nJoints() << " joints" << exit(FatalError);
+    }
+    const labelList& nodeVertex = topo_.nodeVertex();
+    boolList vo(vertexOpen_.size(), false);
+    forAll(open, j)
+    {
+        if (!open[j]) continue;
+        const jointNodeList& jn = topo_.jointNodes()[j];
+        vo[nodeVertex[jn[0]]] = true;
+        vo[nodeVertex[jn[1]]] = true;
+    }
+    if (vo == vertexOpen_) return false;
+    vertexOpen_.transfer(vo);
+    const labelList oldVertex(voidVertex_);
+    setVoids();
+    return voidVertex_ != oldVertex;
 }
 
 
@@ -154,6 +336,7 @@ void Foam::crackNetwork::connect()
         }
         a = b;
     }
+    setVoids();
 }
 
 
@@ -372,6 +555,18 @@ void Foam::crackNetwork::beginStep
         const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
         for (label k = 0; k < 4; ++k) dLast_[i][k] = d[jn[k]];
     }
+    addVoidShares(x, V0_);
+    floored_.setSize(n);
+    openNow_.setSize(2*n);
+    voidForce_ = Zero;
+    forAll(voidVertex_, k)
+    {
+        const label s = vertexNodeStart_[voidVertex_[k]];
+        for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
+        {
+            voidDLast_[c] = d[vertexNode_[s + c - voidCornerStart_[k]]];
+        }
+    }
 }
 
 
@@ -440,18 +635,36 @@ void Foam::crackNetwork::updateForces
     UList<vector2D>& nodeForces
 )
 {
+    // The gaps, then the voids' shares of their volumes (the pressures
+    // need the whole volume), then the forces: the gaps' on their faces,
+    // the voids' on their corners
+    const scalar a = minAperture_;
     forAll(cvJoint_, i)
     {
-        scalar g0, g1;
-        jointGeometry(cvJoint_[i], x, V_[i], L_[i], n_[i], g0, g1);
+        jointGeometry
+        (
+            cvJoint_[i], x, V_[i], L_[i], n_[i], openNow_[2*i],
+            openNow_[2*i + 1]
+        );
+        floored_[i] = V_[i] <= 0.5*L_[i]*a*(1 + SMALL);
+    }
+    forAll(voidVertex_, k)
+    {
+        voidArea_[k] = voidArea(k, x, &voidGrad_[voidCornerStart_[k]]);
+        const label c0 = voidCVStart_[k], c1 = voidCVStart_[k + 1];
+        for (label c = c0; c < c1; ++c)
+        {
+            V_[voidCV_[c]] += voidArea_[k]/(c1 - c0);
+        }
+    }
+    forAll(cvJoint_, i)
+    {
         // The gas pushes where the gap has volume to lose: on the nodes of
         // an end whose opening counts (V = L (o0 + o1)/2 with o = g + a,
         // a = minAperture, does not change with the nodes of an end pressed
         // shut beyond a, nor at all at its floor L a/2). A force on faces
         // pressed into each other would do work with no volume to pay it
         // from, and drain the gas
-        const scalar a = minAperture_;
-        const bool floored = V_[i] <= 0.5*L_[i]*a*(1 + SMALL);
         const scalar p = gapPressure(i, V_[i]);
         // Spent gas (p -> 0 on its isentrope) pushes no more; what it did
         // is paid at the step's end, where a state the work left
@@ -462,12 +675,29 @@ void Foam::crackNetwork::updateForces
         FixedList<vector2D, 2>& last = faceForce_[i];
         for (const label e : {0, 1})
         {
-            const bool open = !floored && (e == 0 ? g0 : g1) + a > 0;
+            const bool open = !floored_[i] && openNow_[2*i + e] + a > 0;
             const vector2D fe = open ? f : vector2D::zero;
             const vector2D df = fe - last[e];
             last[e] = fe;
             nodeForces[jn[e]] += df;
             nodeForces[jn[2 + e]] -= df;
+        }
+    }
+    // A void's corners: the mean pressure of the volumes sharing it times
+    // its area's gradient (each share pushes with its own pressure)
+    forAll(voidVertex_, k)
+    {
+        const label c0 = voidCVStart_[k], c1 = voidCVStart_[k + 1];
+        scalar P = 0;
+        for (label c = c0; c < c1; ++c) P += p_[voidCV_[c]];
+        P /= c1 - c0;
+        const label s = vertexNodeStart_[voidVertex_[k]];
+        for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
+        {
+            const vector2D f = P*voidGrad_[c];
+            nodeForces[vertexNode_[s + c - voidCornerStart_[k]]] +=
+                f - voidForce_[c];
+            voidForce_[c] = f;
         }
     }
 }
@@ -530,6 +760,36 @@ Foam::scalar Foam::crackNetwork::stableSubStep
         h = min(h, 0.05*gap/max(speed, VSMALL));
         h = min(h, Foam::sqrt(0.1*gap/max(accel, VSMALL)));
     }
+    // A void: its corner c moved by delta changes each of the m shares by
+    // G_c.delta/m, the pressure of share j by Gamma_j p_j of that over
+    // V_j, the force by G_c/m of that; and no share changes by more than
+    // 5 % in a sub-step
+    forAll(voidVertex_, k)
+    {
+        if (!(voidArea_[k] > 0)) continue;
+        const label c0 = voidCVStart_[k], c1 = voidCVStart_[k + 1];
+        const label m = c1 - c0;
+        scalar stiff = 0, Vmin = GREAT;
+        for (label c = c0; c < c1; ++c)
+        {
+            const label j = voidCV_[c];
+            stiff += Gamma_[j]*p_[j]/(m*m*V_[j]);
+            Vmin = min(Vmin, V_[j]);
+        }
+        const label s = vertexNodeStart_[voidVertex_[k]];
+        scalar g2im = 0, rate = 0;
+        for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
+        {
+            const label node = vertexNode_[s + c - voidCornerStart_[k]];
+            g2im = max(g2im, magSqr(voidGrad_[c])*invMass[node]);
+            rate += voidGrad_[c] & v[node];
+        }
+        if (stiff*g2im > 0)
+        {
+            h = min(h, 0.5*2/Foam::sqrt(2*stiff*g2im));
+        }
+        h = min(h, 0.05*m*Vmin/max(mag(rate), VSMALL));
+    }
     return h;
 }
 
@@ -548,6 +808,24 @@ void Foam::crackNetwork::addWork(const UList<vector2D>& d)
         const FixedList<vector2D, 2>& f = faceForce_[i];
         work_[i] += (f[0] & (dd[0] - dd[2])) + (f[1] & (dd[1] - dd[3]));
         for (label k = 0; k < 4; ++k) last[k] = d[jn[k]];
+    }
+    // A void's forces (P G_c on its corners, P the mean of its shares'
+    // pressures) did P dA, dA = sum G_c.dd_c: each share pays p_j/m dA
+    forAll(voidVertex_, k)
+    {
+        const label s = vertexNodeStart_[voidVertex_[k]];
+        scalar dA = 0;
+        for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
+        {
+            const vector2D& dn = d[vertexNode_[s + c - voidCornerStart_[k]]];
+            dA += voidGrad_[c] & (dn - voidDLast_[c]);
+            voidDLast_[c] = dn;
+        }
+        const label c0 = voidCVStart_[k], c1 = voidCVStart_[k + 1];
+        for (label c = c0; c < c1; ++c)
+        {
+            work_[voidCV_[c]] += p_[voidCV_[c]]/(c1 - c0)*dA;
+        }
     }
 }
 
@@ -571,6 +849,7 @@ Foam::scalar Foam::crackNetwork::endStep
         g.axis[i] = vector(-n.y(), n.x(), 0);
         g.wallArea[i] = 2*L;
     }
+    addVoidShares(x, g.V1);
     forAll(links_, f)
     {
         const FixedList<label, 5>& l = links_[f];

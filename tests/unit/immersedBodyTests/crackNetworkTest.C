@@ -79,6 +79,61 @@ namespace
         nSub += solid.advance(dt, hook);
         return net.endStep(solid.x(), dt);
     }
+
+    // Break the joints whose face (x0, x1) on A passes pred; returns them
+    template<class Pred>
+    DynamicList<label> breakJoints(femdemSolid& solid, const Pred& pred)
+    {
+        DynamicList<label> broken;
+        forAll(solid.topology().jointNodes(), j)
+        {
+            const jointNodeList& jn = solid.topology().jointNodes()[j];
+            if (pred(solid.x()[jn[0]], solid.x()[jn[1]]))
+            {
+                broken.append(j);
+                solid.setBroken(j);
+            }
+        }
+        return broken;
+    }
+
+    // Gas + solid energy change, and gas energy change + the work the
+    // solid received, over the gas's energy at the start
+    void energyAccounts
+    (
+        const femdemSolid& solid, const crackNetwork& net,
+        const scalar Egas0, const scalar Esolid0,
+        scalar& total, scalar& gasAccount
+    )
+    {
+        const femdemSolid::energyBudget b = solid.energies();
+        const scalar stored =
+            b.kinetic + b.elastic + b.jointStored + b.fracture + b.damping
+          + b.contact;
+        const scalar Egas = net.gas().energy();
+        total = mag(Egas + stored - Egas0 - Esolid0)/Egas0;
+        gasAccount = mag(Egas - Egas0 + b.external)/Egas0;
+    }
+
+    // A solid whose nodes were moved: the state it starts from
+    void startFromHere(femdemSolid& solid)
+    {
+        solid.updateStableTimeStep();
+        solid.resetEnergyBudget();
+        solid.trackWorkDisplacement();
+    }
+
+    // One RK4 step of s'' = acc(s)
+    template<class Acc>
+    void rk4(scalar& s, scalar& v, const scalar dt, const Acc& acc)
+    {
+        const scalar k1s = v, k1v = acc(s);
+        const scalar k2s = v + 0.5*dt*k1v, k2v = acc(s + 0.5*dt*k1s);
+        const scalar k3s = v + 0.5*dt*k2v, k3v = acc(s + 0.5*dt*k2s);
+        const scalar k4s = v + dt*k3v, k4v = acc(s + dt*k3s);
+        s += dt*(k1s + 2*k2s + 2*k3s + k4s)/6;
+        v += dt*(k1v + 2*k2v + 2*k3v + k4v)/6;
+    }
 }
 
 
@@ -122,10 +177,7 @@ TEST(crackNetwork, gasInAGapDrivesTwoBlocksApart)
             for (label k = 0; k < 3; ++k) solid.xRef()[3*t + k].x() += sep0;
         }
     }
-    solid.updateStableTimeStep();
-    solid.resetEnergyBudget();
-    solid.trackWorkDisplacement();
-
+    startFromHere(solid);
     blastMixture mix(dictOf("materials (air); air { equationOfState idealGas; gamma 1.4; }"));
     crackNetwork net(topo, mix, dictOf("RKorder 2;"));
     net.setJoints(crack, solid.x());
@@ -150,23 +202,13 @@ TEST(crackNetwork, gasInAGapDrivesTwoBlocksApart)
     {
         paid += coupledStep(solid, net, dt, f, nSub);
 
-        const scalar k1s = v, k1v = acc(s);
-        const scalar k2s = v + 0.5*dt*k1v, k2v = acc(s + 0.5*dt*k1s);
-        const scalar k3s = v + 0.5*dt*k2v, k3v = acc(s + 0.5*dt*k2s);
-        const scalar k4s = v + dt*k3v, k4v = acc(s + dt*k3s);
-        s += dt*(k1s + 2*k2s + 2*k3s + k4s)/6;
-        v += dt*(k1v + 2*k2v + 2*k3v + k4v)/6;
+        rk4(s, v, dt, acc);
     }
 
     const scalar vL = blockVelocity(solid, 0.5*W + 0.5*sep0, false);
     const scalar vR = blockVelocity(solid, 0.5*W + 0.5*sep0, true);
-    const femdemSolid::energyBudget b = solid.energies();
-    const scalar stored =
-        b.kinetic + b.elastic + b.jointStored + b.fracture + b.damping
-      + b.contact;
-    const scalar Egas = net.gas().energy();
-    const scalar total = mag(Egas + stored - Egas0 - Esolid0)/Egas0;
-    const scalar gasAccount = mag(Egas - Egas0 + b.external)/Egas0;
+    scalar total, gasAccount;
+    energyAccounts(solid, net, Egas0, Esolid0, total, gasAccount);
     const scalar eV = mag(0.5*(vR - vL)/v - 1);
     const scalar pGap = net.gas().p()[0];
     const scalar pOde = p0*Foam::pow(g0/(g0 + 2*s), gamma);
@@ -453,5 +495,175 @@ TEST(crackNetwork, edgeCrackFillsFromItsMouth)
     EXPECT_GT(work, 0);
 }
 
+
+namespace
+{
+void fourBlocksDrivenApart
+(
+    const label nCells,
+    const Foam::scalar s0,
+    const Foam::scalar p0,
+    const std::string& tag
+)
+{
+    // Four 10 x 10 mm blocks of one square (nCells^2 squares), the joints on x = W and y = W
+    // broken and each block moved s0 away from the centre along
+    // its diagonal: the four arms of the cross are gaps 2s wide and the
+    // void where they meet is a square of side 2s. Gas at p0 (rho p0/1e5) in the
+    // cracks (closed at the outline) drives the blocks apart. The volume is
+    //     V(s) = 4 W (2s + a) + 4 s^2 - a^2
+    // (a = minAperture: each end's opening, and the void less a^2), and
+    // each block obeys M s'' = p(V) (W + s) along x and y (its face W and
+    // its corner's share s of the void's gradient); p = p0 (V0/V)^gamma.
+    // Without the void (V = 4 W (2s + a), force p W) the blocks would move
+    // slower and the volume be short by 4 s^2, far beyond the tolerances
+    const scalar W = 0.01, a = 1e-6, rhoS = 2500;
+    const scalar rho0 = p0/1e5, gamma = 1.4;
+    const triangleMesh mesh =
+        triangleMesh::rectangle(vector2D(0, 0), vector2D(2*W, 2*W), nCells, nCells, "rock");
+    femdemSolid solid(mesh, rockDict("1e11"));
+    const jointTopology& topo = solid.topology();
+    const DynamicList<label> crack = breakJoints
+    (
+        solid,
+        [W](const vector2D& x0, const vector2D& x1)
+        {
+            return
+                (mag(x0.x() - W) < 1e-12 && mag(x1.x() - W) < 1e-12)
+             || (mag(x0.y() - W) < 1e-12 && mag(x1.y() - W) < 1e-12);
+        }
+    );
+    ASSERT_EQ(crack.size(), 2*nCells);
+    for (label t = 0; t < solid.nNodes()/3; ++t)
+    {
+        vector2D c = Zero;
+        for (label k = 0; k < 3; ++k) c += solid.x()[3*t + k]/3;
+        const vector2D d(c.x() > W ? s0 : -s0, c.y() > W ? s0 : -s0);
+        for (label k = 0; k < 3; ++k) solid.xRef()[3*t + k] += d;
+    }
+    startFromHere(solid);
+    blastMixture mix(dictOf("materials (air); air { equationOfState idealGas; gamma 1.4; }"));
+    crackNetwork net(topo, mix, dictOf("RKorder 2;"));
+    net.setJoints(crack, solid.x());
+    net.fill(rho0, p0, solid.x());
+    // The voids: the centre, and the four vertices inside the arms where a
+    // straight crack passes (area 0)
+    auto volumeOf = [&](const scalar s, const bool withVoid)
+    {
+        return 4*W*(2*s + a) + (withVoid ? 4*s*s - a*a : 0);
+    };
+    const scalar V0 = volumeOf(s0, true);
+    const scalar eVolume = mag(net.gas().mass()/rho0/V0 - 1);
+    const scalar eVoid = mag(net.voidsArea(solid.x())/(4*s0*s0 - a*a) - 1);
+    record(tag + "voids", net.nVoids());
+    record(tag + "volumeErrorVsExact", eVolume);
+    record(tag + "voidAreaErrorVsExact", eVoid);
+    EXPECT_EQ(net.nVoids(), 1 + 4*(nCells/2 - 1));
+    EXPECT_LT(eVolume, 1e-12);
+    EXPECT_LT(eVoid, 1e-12);
+
+    const scalar Egas0 = net.gas().energy();
+    const scalar Esolid0 = solid.energies().initial;
+    const scalar M = rhoS*W*W;
+    // The ODE (RK4, the same step), with and without the void
+    auto integrate = [&](const bool withVoid, const scalar dt, const label n)
+    {
+        scalar s = s0, v = 0;
+        auto acc = [&](const scalar ss)
+        {
+            const scalar p =
+                p0*Foam::pow(V0/volumeOf(ss, withVoid), gamma);
+            return p*(W + (withVoid ? ss : 0))/M;
+        };
+        for (label k = 0; k < n; ++k)
+        {
+            rk4(s, v, dt, acc);
+        }
+        return std::pair<scalar, scalar>(s, v);
+    };
+
+    const scalar dt = 5e-7, tEnd = 1e-4;
+    const label nSteps = label(tEnd/dt + 0.5);
+    List<vector2D> f(solid.nNodes(), Zero);
+    label nSub = 0;
+    for (label k = 0; k < nSteps; ++k)
+    {
+        coupledStep(solid, net, dt, f, nSub);
+    }
+    const std::pair<scalar, scalar> ode = integrate(true, dt, nSteps);
+    const std::pair<scalar, scalar> noVoid = integrate(false, dt, nSteps);
+
+    // Each block's mean velocity along its diagonal direction
+    scalar vMin = GREAT, vMax = 0;
+    for (const label qx : {0, 1})
+    {
+        for (const label qy : {0, 1})
+        {
+            scalar px = 0, py = 0, m = 0;
+            for (label t = 0; t < solid.nNodes()/3; ++t)
+            {
+                vector2D c = Zero;
+                for (label k = 0; k < 3; ++k) c += solid.x()[3*t + k]/3;
+                if ((c.x() > W) != bool(qx) || (c.y() > W) != bool(qy)) continue;
+                for (label k = 0; k < 3; ++k)
+                {
+                    const label n = 3*t + k;
+                    px += solid.v()[n].x()/solid.invMass()[n];
+                    py += solid.v()[n].y()/solid.invMass()[n];
+                    m += 1/solid.invMass()[n];
+                }
+            }
+            for (const scalar vv : {(qx ? 1 : -1)*px/m, (qy ? 1 : -1)*py/m})
+            {
+                vMin = min(vMin, vv);
+                vMax = max(vMax, vv);
+            }
+        }
+    }
+    scalar total, gasAccount;
+    energyAccounts(solid, net, Egas0, Esolid0, total, gasAccount);
+    const scalar eV = max(mag(vMin/ode.second - 1), mag(vMax/ode.second - 1));
+    // The gas's mean pressure (volume-weighted) against the adiabat at the
+    // ODE's volume, and at the volume the ODE without the void reaches
+    const scalarField& Vg = net.gas().geom().V1;
+    const scalar pMean = sum(net.gas().p()*Vg)/sum(Vg);
+    const scalar pOde = p0*Foam::pow(V0/volumeOf(ode.first, true), gamma);
+    const scalar pNoVoid =
+        p0*Foam::pow(volumeOf(s0, false)/volumeOf(noVoid.first, false), gamma);
+    const scalar eP = mag(pMean/pOde - 1);
+    record(tag + "steps", nSteps);
+    record(tag + "solidSubSteps", nSub);
+    record(tag + "odeBlockSpeed_m_per_s", ode.second);
+    record(tag + "odeBlockSpeedWithoutVoid_m_per_s", noVoid.second);
+    record(tag + "blockSpeedMin_m_per_s", vMin);
+    record(tag + "blockSpeedMax_m_per_s", vMax);
+    record(tag + "blockSpeedErrorVsOde", eV);
+    record(tag + "meanPressure_Pa", pMean);
+    record(tag + "meanPressureErrorVsOde", eP);
+    record(tag + "odePressureWithoutVoidOverWith_minus1", pNoVoid/pOde - 1);
+    record(tag + "separationGrowth_sOverS0", ode.first/s0);
+    record(tag + "voidShareOfVolumeAtEnd", 4*sqr(ode.first)/volumeOf(ode.first, true));
+    record(tag + "gasEnergyChangePlusWorkOnSolid_overEgas0", gasAccount);
+    record(tag + "gasPlusSolidEnergyChange_overEgas0", total);
+    // The blocks move and the gas expands as the ODE with the void says,
+    // and that ODE is well away from the one without it (three times the
+    // tolerances: the checks tell them apart)
+    EXPECT_LT(eV, 0.005);
+    EXPECT_GT(mag(noVoid.second/ode.second - 1), 0.015);
+    EXPECT_LT(eP, 0.01);
+    EXPECT_GT(mag(pNoVoid/pOde - 1), 0.03);
+    EXPECT_GT(ode.first/s0, 2);
+    EXPECT_LT(gasAccount, 1e-12);
+    EXPECT_LT(total, 1e-6);
+}
+}
+
+
+TEST(crackNetwork, voidWhereFourCracksMeetHoldsGasAndPushes)
+{
+    fourBlocksDrivenApart(4, 5e-4, 1e7, "");
+    // Finer blocks, a wider start, another pressure
+    fourBlocksDrivenApart(8, 1e-3, 3e7, "fine_");
+}
 
 // ************************************************************************* //
