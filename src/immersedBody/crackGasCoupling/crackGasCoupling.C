@@ -128,17 +128,89 @@ void Foam::crackGasCoupling::setNetworkJoints
 
     released_.clear();
     net_.setJoints(joints_, x, &released_);
-    // Handed over: into the fluid cell with gas at the joint's midpoint,
-    // else at one of its nodes (the crack opened to the gas runs through
-    // them); of the cells holding the first such point, the best (most
-    // gas, then lowest centre): the same cell on any decomposition
-    const jointTopology& topo = view.view().topology();
+    handOver(x, view.view().topology(), fluid);
+}
+
+
+void Foam::crackGasCoupling::handOver
+(
+    const UList<vector2D>& x,
+    const jointTopology& topo,
+    const blastFluidSolver& fluid
+)
+{
+    // The gas of a joint the view opened goes to the fluid cells its gap
+    // (p0 q0 q1 p1, counter-clockwise) overlaps, in proportion to the
+    // overlaps (exact clipping: the view opened that gap to the cells'
+    // gas), the cells without gas left out; the shares' sums over the
+    // ranks, so that every decomposition hands over the serial shares
     const scalarField* phi = fluid.fluidFractionField();
-    const label nPts = 5;
-    cellKeys_.setSize(nPts*released_.size());
+    DynamicList<label> cells;
+    DynamicList<scalar> areas;
+    scalarList total(released_.size(), Zero);
+    labelList cellStart(released_.size() + 1, Zero);
+    DynamicList<vector2D> gap(4);
     forAll(released_, r)
     {
         const jointNodeList& jn = topo.jointNodes()[released_[r].first];
+        gap.clear();
+        for (const label k : {0, 2, 3, 1}) gap.append(x[jn[k]]);
+        const label c0 = cells.size();
+        projection_.overlapsOf(gap, cells, areas);
+        label n = c0;
+        for (label k = c0; k < cells.size(); ++k)
+        {
+            if (phi && !((*phi)[cells[k]] > 0)) continue;
+            cells[n] = cells[k];
+            areas[n++] = areas[k];
+            total[r] += areas[n - 1];
+        }
+        cells.setSize(n);
+        areas.setSize(n);
+        cellStart[r + 1] = n;
+    }
+    Pstream::listCombineGather(total, plusEqOp<scalar>());
+    Pstream::listCombineScatter(total);
+    DynamicList<label> byPoint;
+    forAll(released_, r)
+    {
+        if (!(total[r] > 0))
+        {
+            byPoint.append(r);
+            continue;
+        }
+        const ductNetwork::content& c = released_[r].second;
+        for (label k = cellStart[r]; k < cellStart[r + 1]; ++k)
+        {
+            const scalar w = areas[k]/total[r];
+            givenCell_.append(cells[k]);
+            given_.append({w*c.m, w*c.mE, w*c.aV, w*c.m1, w*c.mU});
+        }
+    }
+    handOverAtPoints(x, topo, phi, byPoint);
+}
+
+
+void Foam::crackGasCoupling::handOverAtPoints
+(
+    const UList<vector2D>& x,
+    const jointTopology& topo,
+    const scalarField* phi,
+    const labelUList& released
+)
+{
+    // A gap that overlaps no cell with gas (twisted to no area, or over
+    // cells the solid covers): into the fluid cell with gas at its
+    // midpoint, else at one of its nodes (the crack opened to the gas runs
+    // through them); of the cells holding the first such point, the best
+    // (most gas, then lowest centre): the same cell on any decomposition.
+    // Every rank calls this (bestOverRanks reduces)
+    const label nPts = 5;
+    cellKeys_.setSize(nPts*released.size());
+    forAll(released, i)
+    {
+        const jointNodeList& jn =
+            topo.jointNodes()[released_[released[i]].first];
         const vector2D at[nPts] =
         {
             0.25*(x[jn[0]] + x[jn[1]] + x[jn[2]] + x[jn[3]]),
@@ -146,22 +218,22 @@ void Foam::crackGasCoupling::setNetworkJoints
         };
         for (label k = 0; k < nPts; ++k)
         {
-            cellKeys_[nPts*r + k] = containingKey(at[k], phi);
+            cellKeys_[nPts*i + k] = containingKey(at[k], phi);
         }
     }
     bestOverRanks(cellKeys_);
-    forAll(released_, r)
+    forAll(released, i)
     {
-        const ductNetwork::content& c = released_[r].second;
+        const ductNetwork::content& c = released_[released[i]].second;
         label k = 0;
-        while (k < nPts && cellKeys_[nPts*r + k].x() < 0) ++k;
+        while (k < nPts && cellKeys_[nPts*i + k].x() < 0) ++k;
         if (k == nPts)
         {
             lostMass_ += c.m;
             lostEnergy_ += c.mE;
             continue;
         }
-        const label ci = cellOfKey(cellKeys_[nPts*r + k]);
+        const label ci = cellOfKey(cellKeys_[nPts*i + k]);
         if (ci >= 0)
         {
             givenCell_.append(ci);

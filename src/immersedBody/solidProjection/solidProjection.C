@@ -507,4 +507,57 @@ void Foam::solidProjection::findCells
 }
 
 
+void Foam::solidProjection::overlapsOf
+(
+    const UList<vector2D>& polygon,
+    DynamicList<label>& cells,
+    DynamicList<scalar>& areas
+) const
+{
+    if (polygon.empty()) return;
+    vector2D lo = polygon[0], hi = polygon[0];
+    for (const vector2D& p : polygon)
+    {
+        lo = min(lo, p);
+        hi = max(hi, p);
+    }
+    // Rare (crack gas handed to the mesh): its own working storage
+    DynamicList<vector2D> clipped, work;
+    const label first = cells.size();
+    index_.forEachCandidate
+    (
+        lo, hi,
+        [&](const label celli)
+        {
+            // (a cell may be visited more than once by the bins)
+            if
+            (
+                cellLo_[celli].x() > hi.x() || cellHi_[celli].x() < lo.x()
+             || cellLo_[celli].y() > hi.y() || cellHi_[celli].y() < lo.y()
+             || SubList<label>(cells, cells.size() - first, first)
+               .found(celli)
+            )
+            {
+                return;
+            }
+            clipped = polygon;
+            const label s = cellStart_[celli];
+            polygonClipping::clipConvex
+            (
+                clipped, &cellVertices_[s], cellStart_[celli + 1] - s, work
+            );
+            if (clipped.size() < 3) return;
+            scalar area;
+            vector2D centroid;
+            polygonClipping::areaAndCentroid(clipped, area, centroid);
+            if (area > 0)
+            {
+                cells.append(celli);
+                areas.append(area);
+            }
+        }
+    );
+}
+
+
 // ************************************************************************* //

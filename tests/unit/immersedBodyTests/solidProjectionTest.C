@@ -2,6 +2,7 @@
 // distribution, checked against closed-form areas, moments and momenta
 #include <gtest/gtest.h>
 #include "solidProjection.H"
+#include "polygonClipping.H"
 #include "triangleMesh.H"
 #include "Random.H"
 #include "immersedBodyTestTools.H"
@@ -201,4 +202,61 @@ TEST(solidProjection, findCellAgreesWithBruteForce)
     RecordProperty("pointsOutside", std::to_string(outside));
     EXPECT_GT(outside, 100);
     EXPECT_EQ(mismatches, 0);
+}
+
+
+TEST(solidProjection, overlapsOfACrackGapAreTheClippedAreas)
+{
+    // Thin sheared quadrilaterals (a crack gap p0 q0 q1 p1: length 0.02 to
+    // 0.2, opening 1e-4 to 1e-2, any direction) on a jittered grid: the
+    // cells and areas overlapsOf finds against clipping every cell (brute
+    // force), and the areas' sum against the quadrilateral's area
+    const auto grid = jitteredGrid(17, 13);
+    solidProjection projection(grid);
+    Random rnd(7);
+    scalar worstSum = 0, worstCell = 0;
+    label missed = 0, nOverlaps = 0;
+    DynamicList<vector2D> clipped, work;
+    for (label n = 0; n < 200; ++n)
+    {
+        const vector2D c(0.2 + 0.6*rnd.sample01<scalar>(), 0.2 + 0.6*rnd.sample01<scalar>());
+        const scalar angle = 6.283185307179586*rnd.sample01<scalar>();
+        const scalar L = 0.02 + 0.18*rnd.sample01<scalar>();
+        const scalar g = Foam::pow(10, -4 + 2*rnd.sample01<scalar>());
+        const vector2D t(Foam::cos(angle), Foam::sin(angle)), nrm(t.y(), -t.x());
+        const vector2D shear = (rnd.sample01<scalar>() - 0.5)*g*t;
+        const vector2D p0 = c - 0.5*L*t, p1 = c + 0.5*L*t;
+        const List<vector2D> gap({p0, p0 + g*nrm + shear, p1 + g*nrm + shear, p1});
+        DynamicList<label> cells;
+        DynamicList<scalar> areas;
+        projection.overlapsOf(gap, cells, areas);
+        nOverlaps += cells.size();
+        const scalar exact = L*g;
+        worstSum = max(worstSum, mag(sum(areas)/exact - 1));
+        for (label ci = 0; ci < projection.nCells(); ++ci)
+        {
+            clipped = gap;
+            const label s = grid.second[ci];
+            polygonClipping::clipConvex
+            (
+                clipped, &grid.first[s], grid.second[ci + 1] - s, work
+            );
+            scalar a = 0;
+            vector2D centroid;
+            if (clipped.size() >= 3)
+            {
+                polygonClipping::areaAndCentroid(clipped, a, centroid);
+            }
+            const label k = cells.find(ci);
+            if (a > 1e-14*exact && k < 0) ++missed;
+            if (k >= 0) worstCell = max(worstCell, mag(areas[k] - a)/exact);
+        }
+    }
+    RecordProperty("gapCellOverlaps", std::to_string(nOverlaps));
+    RecordProperty("worstAreaSumError", sci(worstSum));
+    RecordProperty("worstCellAreaError", sci(worstCell));
+    EXPECT_EQ(missed, 0);
+    EXPECT_GT(nOverlaps, 400);
+    EXPECT_LT(worstSum, 1e-11);
+    EXPECT_LT(worstCell, 1e-14);
 }
