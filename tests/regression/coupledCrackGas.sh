@@ -8,27 +8,29 @@
 # accounted for: mesh gas + crack gas mass changes only by what the network
 # created for isolated joints and what it could not hand back (both printed),
 # and mesh + crack gas energy + the work on the solid likewise, to round-off.
-# Then the same case on 2 ranks against the serial budget (part 2).
+# Restart (<time>/uniform/crackGas beside the solid's femdemState): from
+# 0.25 ms (50 joints hold gas) to 0.5 ms equals the one run (fields, solid,
+# crack gas file, budget rows: 1e-12); a damaged crack gas file (a size, a
+# joint, a mass) and a missing one stop naming the file (and the entry).
+# Then the same case on 2 ranks against the serial budget (part 2), and a
+# 2-rank restart from a signal stop against the 2-rank run (part 3).
 cd "$JWLIBFOAM_TEST_DIR" || exit 1
 data=$JWLIBFOAM_PROJECT/tests/regression/coupledData/crackVenting
 rm -rf crackGas && cp -r "$data" crackGas && cd crackGas || exit 1
 echo 'crackGas { }' >> constant/immersedBodyProperties
+# Fields written to round-trip precision (the test's copy): the restart
+# below reads them back bit for bit
+sed -i 's/^writePrecision .*/writePrecision  17;/' system/controlDict
 blockMesh > log.blockMesh 2>&1 && femdemMesh > log.femdemMesh 2>&1 && setFields > log.setFields 2>&1 || exit 1
 jwlIbFoam > log.jwlIbFoam 2>&1 || { tail -5 log.jwlIbFoam; exit 1; }
-# The crack gas is not written with the time directories yet: a restart (the
-# solid has broken joints) must stop naming the entry, not start it again
-# from nothing; a misspelt entry is refused
-sed -i 's/^startFrom .*/startFrom latestTime;/' system/controlDict
-if jwlIbFoam > log.restart 2>&1 || ! grep -q "entry 'crackGas'" log.restart; then
-    echo ">> restart with crackGas: not refused  <-- FAIL"; tail -5 log.restart; exit 1
-fi
-echo ">> restart with crackGas refused, naming the entry"
-sed -i 's/^startFrom .*/startFrom startTime;/' system/controlDict
-sed -i 's/^crackGas { }/crackGas { minApertur 1e-6; }/' constant/immersedBodyProperties
-if jwlIbFoam > log.typo 2>&1 || ! grep -q "unknown entry 'minApertur' in crackGas" log.typo; then
-    echo ">> misspelt crackGas entry: not refused  <-- FAIL"; tail -5 log.typo; exit 1
+# A misspelt entry is refused
+cd .. && rm -rf crackGasTypo && mkdir crackGasTypo && cp -r crackGas/{0,constant,system} crackGasTypo/
+sed -i 's/^crackGas { }/crackGas { minApertur 1e-6; }/' crackGasTypo/constant/immersedBodyProperties
+if (cd crackGasTypo && jwlIbFoam > log.typo 2>&1) || ! grep -q "unknown entry 'minApertur' in crackGas" crackGasTypo/log.typo; then
+    echo ">> misspelt crackGas entry: not refused  <-- FAIL"; tail -5 crackGasTypo/log.typo; exit 1
 fi
 echo ">> misspelt crackGas entry refused, naming it"
+cd crackGas || exit 1
 /usr/bin/python3 - <<'PY'
 import os, sys
 import numpy as np
@@ -55,6 +57,103 @@ sys.exit(1 if budgetFile.report(res) else 0)
 PY
 [ $? = 0 ] || exit 1
 
+# Restart from 0.25 ms (a write time, the network holding the gas of 50
+# joints) to 0.5 ms, against the one run
+cd "$JWLIBFOAM_TEST_DIR" || exit 1
+rm -rf crackGasRestart && mkdir crackGasRestart && cp -r crackGas/{0,constant,system,0.00025} crackGasRestart/
+sed -i 's/^endTime .*/endTime 5e-4;/' crackGasRestart/system/controlDict
+(cd crackGasRestart && jwlIbFoam > log.jwlIbFoam 2>&1) || { tail -5 crackGasRestart/log.jwlIbFoam; echo ">> restart from 0.25 ms failed  <-- FAIL"; exit 1; }
+echo ">> $(grep -m1 '^Crack gas restarted' crackGasRestart/log.jwlIbFoam)"
+/usr/bin/python3 - <<'PY'
+import os, re, subprocess, sys
+import numpy as np
+data = os.path.join(os.environ["JWLIBFOAM_PROJECT"], "tests", "regression", "coupledData")
+sys.path.insert(0, data)
+import budget as budgetFile
+
+def entries(path):
+    """The numbers of each entry of a crack gas file"""
+    text = open(path).read()
+    text = text[text.index("}", text.index("FoamFile")) + 1:]
+    out = {}
+    for m in re.finditer(r"(\w+)\s+([^;]*);", text):
+        value = re.sub(r"^\s*\d+\s*\(", "(", m.group(2))   # a list's size
+        v = re.findall(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", value)
+        out[m.group(1)] = np.array([float(t) for t in v])
+    return out
+
+res = []
+fields = subprocess.run(["/usr/bin/python3", os.path.join(data, "compareCases.py"),
+                         "crackGas/0.0005", "crackGasRestart/0.0005"],
+                        capture_output=True, text=True).stdout.split()
+res.append(("restart vs one run at 0.5 ms: max relative difference of the fields and the solid state",
+            float(fields[-1]) if fields and fields[-2] == "max" else np.inf, 1e-12, "<="))
+a = entries("crackGas/0.0005/uniform/crackGas")
+b = entries("crackGasRestart/0.0005/uniform/crackGas")
+res.append(("crack gas file at 0.5 ms: control volumes (one run)", len(a.get("joints", [])), 1, ">="))
+same = sorted(a) == sorted(b) and all(a[k].shape == b[k].shape for k in a)
+res.append(("crack gas file at 0.5 ms: entries or sizes that differ", 0 if same else 1, 0, "<="))
+if same:
+    res.append(("crack gas file at 0.5 ms: joints that differ", int((a["joints"] != b["joints"]).sum()), 0, "<="))
+    d = max(np.abs(a[k] - b[k]).max() / max(np.abs(a[k]).max(), 1e-300) if a[k].size else 0 for k in a)
+    res.append(("crack gas file at 0.5 ms: max relative difference of an entry", d, 1e-12, "<="))
+s = budgetFile.load("crackGas/postProcessing/jwlIbFoam/0/budget.dat")
+r = budgetFile.load("crackGasRestart/postProcessing/jwlIbFoam/0.00025/budget.dat")
+n = len(r["time"])
+i0 = int(np.abs(s["time"] - r["time"][0]).argmin())   # the first step after the restart
+nOne = int((s["time"][i0:] <= 5e-4 * (1 + 1e-12)).sum())
+res.append((f"budget rows after the restart (one run: {nOne})", n, nOne, ">="))
+res.append(("max |time restart - one run| [s]", np.abs(r["time"] - s["time"][i0:i0 + n]).max(), 1e-15, "<="))
+for c in ("crackGasMass", "crackGasEnergy", "crackGasCreatedMass", "crackGasLostMass", "gasMass", "gasEnergy", "solidKinetic"):
+    d = np.abs(r[c] - s[c][i0:i0 + n]).max() / max(np.abs(s[c][i0:i0 + n]).max(), 1e-300)
+    res.append((f"max |{c} restart - one run| / max |{c}|", d, 1e-12, "<="))
+sys.exit(1 if budgetFile.report(res) else 0)
+PY
+[ $? = 0 ] || exit 1
+
+# A damaged crack gas file stops naming the file and the entry; a missing
+# one (the solid restarts with broken joints) naming the file
+rm -rf crackGasBad && mkdir crackGasBad && cp -r crackGas/{0,constant,system,0.00025} crackGasBad/
+cd crackGasBad || exit 1
+state=0.00025/uniform/crackGas
+damage() {
+    cp ../crackGas/$state $state
+    /usr/bin/python3 - "$1" "$state" <<'PY'
+import re, sys
+how, f = sys.argv[1], sys.argv[2]
+t = open(f).read()
+if how == "size":      # one joint fewer than control volumes in 'm'
+    t2 = re.sub(r"(\njoints\s+)(\d+)(\s*\(\s*)\d+\s", lambda m: f"{m.group(1)}{int(m.group(2)) - 1}{m.group(3)}", t, count=1)
+elif how == "mass":    # the first control volume's mass negative
+    t2 = re.sub(r"(\nm\s+\d+\s*\(\s*)", r"\1-", t, count=1)
+elif how == "joint":   # the first joint replaced by one the solid has not broken
+    b = open("0.00025/uniform/femdemState").read()
+    broken = re.search(r"\nbroken\s+\d+\s*\(([^)]*)\)", b).group(1).split()
+    j = broken.index("0")
+    t2 = re.sub(r"(\njoints\s+\d+\s*\(\s*)\d+", lambda m: f"{m.group(1)}{j}", t, count=1)
+t2 != t or sys.exit(f"damage {how}: nothing replaced")
+open(f, "w").write(t2)
+PY
+}
+bad=0
+check() {   # name, log, patterns the log must hold
+    local name=$1 log=$2; shift 2
+    local p ok=1
+    for p in "$@"; do grep -q -- "$p" $log || ok=0; done
+    if [ $ok = 1 ]; then echo ">> $name: stopped: $(grep -A1 -m1 'FOAM FATAL' $log | tail -n 1)"
+    else echo ">> $name: not stopped as expected  <-- FAIL"; grep -A4 FATAL $log | head -8; bad=1; fi
+}
+damage size && { jwlIbFoam > log.size 2>&1; check "crack gas file with a size changed" log.size \
+    "FOAM FATAL IO ERROR" "$state" "entry 'm': [0-9]* values for the [0-9]* control volumes of 'joints'"; }
+damage mass && { jwlIbFoam > log.mass 2>&1; check "crack gas file with a negative mass" log.mass \
+    "FOAM FATAL IO ERROR" "$state" "entry 'm': control volume 0"; }
+damage joint && { jwlIbFoam > log.joint 2>&1; check "crack gas file with a joint the solid has not broken" log.joint \
+    "FOAM FATAL IO ERROR" "$state" "entry 'joints': joint [0-9]* holds crack gas but is not broken"; }
+rm -f $state
+jwlIbFoam > log.missing 2>&1; check "crack gas file missing (the solid has broken joints)" log.missing \
+    "FOAM FATAL ERROR" "crack gas state \".*$state\" is missing"
+[ $bad = 0 ] || exit 1
+
 # 2. The same case on 2 ranks (simple 2 x 1, the cut through the plate's
 # cracks) until 1.13e-4 s: the serial answer (mouth cells and plenums chosen
 # by a rule no decomposition changes; crackGasCoupling). Later the solid
@@ -64,10 +163,11 @@ PY
 cd "$JWLIBFOAM_TEST_DIR" || exit 1
 rm -rf crackGasParallel && cp -r "$data" crackGasParallel && cd crackGasParallel || exit 1
 echo 'crackGas { }' >> constant/immersedBodyProperties
-sed -i 's/^endTime .*/endTime 1.13e-4;/' system/controlDict
+sed -i 's/^endTime .*/endTime 1.13e-4;/; s/^writePrecision .*/writePrecision  17;/' system/controlDict
 printf 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains 2;\nmethod simple;\ncoeffs { n (2 1 1); }\n' > system/decomposeParDict
 blockMesh > log.blockMesh 2>&1 && femdemMesh > log.femdemMesh 2>&1 && setFields > log.setFields 2>&1 \
     && decomposePar > log.decomposePar 2>&1 || exit 1
+rm -rf ../crackGasParallelRestart && cp -r . ../crackGasParallelRestart
 start=$(date +%s)
 timeout 300 mpirun --allow-run-as-root --oversubscribe -np 2 jwlIbFoam -parallel > log.jwlIbFoam 2>&1 \
     || { tail -5 log.jwlIbFoam; echo ">> 2 ranks: jwlIbFoam failed  <-- FAIL"; exit 1; }
@@ -88,5 +188,51 @@ res.append(("most crack gas in the compared steps / gas mass", crack, 1e-6, ">="
 for c in ("crackGasMass", "crackGasEnergy", "gasMass", "gasEnergy", "solidKinetic"):
     d = np.abs(p[c] - s[c][:n]).max() / np.abs(s[c][:n]).max()
     res.append((f"max |{c} 2 ranks - serial| / max |{c}|", d, 1e-9, "<="))
+sys.exit(1 if budgetFile.report(res) else 0)
+PY
+[ $? = 0 ] || exit 1
+
+# 3. A 2-rank restart: the run above stopped by SIGUSR1 to mpirun after 45
+# steps (the step is written on both ranks, with the crack gas: the network
+# holds joints from about 25 steps on) and restarted to 1.13e-4 s, against
+# the 2-rank run without the stop (budget rows after the restart, 1e-12)
+cd ../crackGasParallelRestart || exit 1
+mpirun --allow-run-as-root --oversubscribe -np 2 jwlIbFoam -parallel > log.stop 2>&1 &
+pid=$!
+for ((k = 0; k < 3000; k++)); do
+    [ "$(grep -c '^Time = ' log.stop)" -ge 45 ] && break
+    kill -0 $pid 2> /dev/null || break
+    sleep 0.02
+done
+kill -USR1 $pid 2> /dev/null; wait $pid
+tStop=$(cd processor0 && ls -d [0-9]* | grep -vx 0 | sort -g | tail -1)
+if [ -z "$tStop" ] || [ ! -s processor0/$tStop/uniform/crackGas ] || [ ! -s processor1/$tStop/uniform/crackGas ]; then
+    echo ">> 2 ranks stopped by a signal: no crack gas state written on both ranks ('$tStop')  <-- FAIL"; tail -5 log.stop; exit 1
+fi
+# Every rank holds the whole network and writes it into its own directory
+if cmp -s processor0/$tStop/uniform/crackGas processor1/$tStop/uniform/crackGas; then
+    echo ">> 2 ranks: the crack gas files of the ranks are equal"
+else
+    echo ">> 2 ranks: the crack gas files of the ranks differ  <-- FAIL"; exit 1
+fi
+timeout 300 mpirun --allow-run-as-root --oversubscribe -np 2 jwlIbFoam -parallel > log.jwlIbFoam 2>&1 \
+    || { tail -5 log.jwlIbFoam; echo ">> 2-rank restart failed  <-- FAIL"; exit 1; }
+echo ">> 2 ranks stopped at $tStop s, restarted: $(grep -m1 '^Crack gas restarted' log.jwlIbFoam)"
+TSTOP=$tStop /usr/bin/python3 - <<'PY'
+import os, sys
+import numpy as np
+sys.path.insert(0, os.path.join(os.environ["JWLIBFOAM_PROJECT"], "tests", "regression", "coupledData"))
+import budget as budgetFile
+
+s = budgetFile.load("../crackGasParallel/postProcessing/jwlIbFoam/0/budget.dat")
+r = budgetFile.load(f"postProcessing/jwlIbFoam/{os.environ['TSTOP']}/budget.dat")
+n = len(r["time"])
+i0 = int(np.abs(s["time"] - r["time"][0]).argmin())   # the first step after the restart
+res = [("budget rows after the 2-rank restart (2-rank run: %d)" % (len(s["time"]) - i0), n, len(s["time"]) - i0, ">="),
+       ("max |time restart - 2-rank run| [s]", np.abs(r["time"] - s["time"][i0:i0 + n]).max(), 1e-15, "<="),
+       ("crack gas at the restart / gas mass", s["crackGasMass"][i0 - 1] / s["gasMass"][0], 1e-7, ">=")]
+for c in ("crackGasMass", "crackGasEnergy", "crackGasCreatedMass", "crackGasLostMass", "gasMass", "gasEnergy", "solidKinetic"):
+    d = np.abs(r[c] - s[c][i0:i0 + n]).max() / max(np.abs(s[c][i0:i0 + n]).max(), 1e-300)
+    res.append((f"max |{c} 2-rank restart - 2-rank run| / max |{c}|", d, 1e-12, "<="))
 sys.exit(1 if budgetFile.report(res) else 0)
 PY

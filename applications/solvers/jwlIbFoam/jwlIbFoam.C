@@ -42,11 +42,15 @@ Description
     Restarts (startFrom latestTime) continue the exact time and the write
     schedule of the first run (restartableTime): a run stopped by a signal
     and restarted equals the uninterrupted one, also with writeControl
-    adjustableRunTime.
+    adjustableRunTime. The solid and the crack gas continue from their
+    states in <time>/uniform/ (a solid with broken joints and crackGas
+    needs both).
 
     Output: the gas fields and alpha.solid, U.solid at write times;
     <time>/uniform/femdemState (the solid, bit-exact; copied by
-    reconstructPar); VTK/femdem.vtu.series with the solid and its cracks;
+    reconstructPar) and, with crackGas, <time>/uniform/crackGas (the crack
+    gas, bit-exact: a restart continues it); VTK/femdem.vtu.series with the
+    solid and its cracks;
     postProcessing/jwlIbFoam/<startTime>/budget.dat: per step the mass,
     momentum and energy of gas and solid per unit depth, sub-steps, broken
     joints and fragments. A log line per step; every few seconds of wall

@@ -8,6 +8,9 @@ License
 #include "crackGasCoupling.H"
 #include "syncTools.H"
 #include "processorPolyPatch.H"
+#include "caseChecks.H"
+#include "IFstream.H"
+#include "OFstream.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -500,6 +503,60 @@ void Foam::crackGasCoupling::exchange(blastFluidSolver& fluid)
     {
         fluid.addContent(cells, dm, dmU, dE, dm1);
     }
+}
+
+
+void Foam::crackGasCoupling::writeState(const fileName& file) const
+{
+    mkDir(file.path());
+    OFstream os(file);
+    // OpenFOAM's header (a time directory's uniform/ file)
+    IOobject(file.name(), mesh_.time().timeName(), "uniform", mesh_)
+        .writeHeader(os, "dictionary");
+    net_.writeState(os);
+    const int oldPrecision = os.precision(17);
+    os.writeEntry("lostMass", lostMass_);
+    os.writeEntry("lostEnergy", lostEnergy_);
+    os.precision(oldPrecision);
+}
+
+
+bool Foam::crackGasCoupling::readState
+(
+    const fileName& file,
+    const UList<vector2D>& x,
+    const boolList& broken
+)
+{
+    if (!isFile(file))
+    {
+        return false;
+    }
+    IFstream is(file);
+    const dictionary dict(is);
+    // Duplicates, numbers, list sizes
+    caseChecks::checkInput(dict);
+    net_.readState(dict, x);
+    for (const label j : net_.joints())
+    {
+        if (!broken[j])
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'joints': joint " << j << " holds crack gas but is"
+                << " not broken in the solid's state: the crack gas and the"
+                << " solid are of different times or runs"
+                << exit(FatalIOError);
+        }
+    }
+    lostMass_ = dict.get<scalar>("lostMass");
+    lostEnergy_ = dict.get<scalar>("lostEnergy");
+    if (!(lostMass_ >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'lostMass' is " << lostMass_ << "; it sums masses and"
+            << " must be >= 0" << exit(FatalIOError);
+    }
+    return true;
 }
 
 

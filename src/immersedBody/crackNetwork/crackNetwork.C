@@ -6,6 +6,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "crackNetwork.H"
+#include "caseChecks.H"
 #include <algorithm>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
@@ -919,6 +920,157 @@ Foam::scalar Foam::crackNetwork::endStep
     maxMass *= n;
     nGasSubSteps_ = n;
     return sum(work_);
+}
+
+
+void Foam::crackNetwork::writeState(Ostream& os) const
+{
+    const label n = cvJoint_.size();
+    scalarList m(n), mE(n), aV(n), m1(n);
+    List<vector> mU(n);
+    forAll(cvJoint_, i)
+    {
+        const ductNetwork::content c = gas_.contentOf(i);
+        m[i] = c.m; mE[i] = c.mE; aV[i] = c.aV; m1[i] = c.m1; mU[i] = c.mU;
+    }
+    // Round-trip precision: a restart continues the run bit for bit
+    const int oldPrecision = os.precision(17);
+    os.writeEntry("joints", cvJoint_);
+    os.writeEntry("m", m);
+    os.writeEntry("mE", mE);
+    os.writeEntry("aV", aV);
+    os.writeEntry("m1", m1);
+    os.writeEntry("mU", mU);
+    os.writeEntry("createdMass", createdMass_);
+    os.writeEntry("createdEnergy", createdEnergy_);
+    os.writeEntry("removedMass", removedMass_);
+    os.writeEntry("removedEnergy", removedEnergy_);
+    os.precision(oldPrecision);
+}
+
+
+void Foam::crackNetwork::readState
+(
+    const dictionary& dict,
+    const UList<vector2D>& x
+)
+{
+    const labelList joints(dict.get<labelList>("joints"));
+    const label n = joints.size();
+    labelList cv(topo_.nJoints(), -1);
+    forAll(joints, i)
+    {
+        const label j = joints[i];
+        if (j < 0 || j >= cv.size() || cv[j] >= 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'joints': joint " << j << " (control volume " << i
+                << ") is " << (j < 0 || j >= cv.size() ? "not" : "twice")
+                << " in a solid of " << cv.size() << " joints"
+                << exit(FatalIOError);
+        }
+        cv[j] = i;
+    }
+    const scalarList m(dict.get<scalarList>("m"));
+    const scalarList mE(dict.get<scalarList>("mE"));
+    const scalarList aV(dict.get<scalarList>("aV"));
+    const scalarList m1(dict.get<scalarList>("m1"));
+    const List<vector> mU(dict.get<List<vector>>("mU"));
+    const FixedList<std::pair<word, label>, 5> sizes
+    ({
+        {"m", m.size()}, {"mE", mE.size()}, {"aV", aV.size()},
+        {"m1", m1.size()}, {"mU", mU.size()}
+    });
+    for (const std::pair<word, label>& s : sizes)
+    {
+        if (s.second != n)
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry '" << s.first << "': " << s.second << " values for"
+                << " the " << n << " control volumes of 'joints'"
+                << exit(FatalIOError);
+        }
+    }
+    // The gas of a control volume: mass > 0, and no negative material
+    // volume or mass (a state the network never writes)
+    forAll(joints, i)
+    {
+        const word bad =
+            !(m[i] > 0) ? "m"
+          : !(aV[i] >= 0) ? "aV"
+          : !(m1[i] >= 0) ? "m1"
+          : "";
+        if (bad.size())
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry '" << bad << "': control volume " << i << " (joint "
+                << joints[i] << ") has " << bad << " = "
+                << (bad == "m" ? m[i] : bad == "aV" ? aV[i] : m1[i])
+                << ", not a state the crack gas writes (m > 0, aV >= 0,"
+                << " m1 >= 0)" << exit(FatalIOError);
+        }
+    }
+    const FixedList<word, 4> counters
+    ({"createdMass", "createdEnergy", "removedMass", "removedEnergy"});
+    scalar value[4];
+    forAll(counters, k)
+    {
+        value[k] = dict.get<scalar>(counters[k]);
+    }
+    for (const label k : {0, 2})
+    {
+        if (!(value[k] >= 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry '" << counters[k] << "' is " << value[k]
+                << "; it sums masses and must be >= 0" << exit(FatalIOError);
+        }
+    }
+
+    cvJoint_ = joints;
+    jointCV_ = cv;
+    connect();
+    mouths_.clear();
+    gas_.setSize(n, links_.size());
+    faceForce_.setSize(n);
+    faceForce_ = FixedList<vector2D, 2>(Zero);
+    forAll(joints, i)
+    {
+        gas_.setContent(i, {m[i], mE[i], aV[i], m1[i], mU[i]});
+    }
+    createdMass_ = value[0];
+    createdEnergy_ = value[1];
+    removedMass_ = value[2];
+    removedEnergy_ = value[3];
+    if (n)
+    {
+        // A content without a physical state in its gap (no pressure)
+        // stops naming the control volume: its pressure as the next step
+        // sees it (gapPressure of the content, no work done yet); any other
+        // error of the primitives naming the file
+        const scalarField V(gapAreas(x));
+        V0_ = V;
+        content0_.setSize(n);
+        eInt0_.setSize(n);
+        work_.setSize(n);
+        work_ = 0;
+        forAll(joints, i)
+        {
+            content0_[i] = gas_.contentOf(i);
+            eInt0_[i] = mE[i] - 0.5*magSqr(mU[i])/m[i];
+            const scalar p = gapPressure(i, V[i]);
+            if (!(p > 0) || !std::isfinite(p))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "entries 'm', 'mE', 'mU': control volume " << i
+                    << " (joint " << joints[i] << ") has no physical state"
+                    << " in its gap (pressure " << p << " in volume " << V[i]
+                    << "): not a state the crack gas writes"
+                    << exit(FatalIOError);
+            }
+        }
+        caseChecks::readNaming(dict, [&](){ gas_.correct(V); });
+    }
 }
 
 
