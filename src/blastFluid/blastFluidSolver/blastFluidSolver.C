@@ -246,153 +246,44 @@ void Foam::blastFluidSolver::updateBurn(const scalar t)
 {
     burn_->update(t);
     const scalarField& F = burn_->burnFraction().primitiveField();
-    burnL_.setSize(nFaces_);
-    burnR_.setSize(nFaces_);
-    for (label f = 0; f < nFaces_; ++f)
+    burnL_.setSize(addr_.nFaces());
+    burnR_.setSize(addr_.nFaces());
+    for (label f = 0; f < addr_.nFaces(); ++f)
     {
-        burnL_[f] = F[own_[f]];
-        burnR_[f] = f < nInternal_ ? F[nei_[f]] : burnL_[f];
+        burnL_[f] = F[addr_.own()[f]];
+        burnR_[f] = f < addr_.nInternal() ? F[addr_.nei()[f]] : burnL_[f];
     }
     coupledNeighbourValues(burn_->burnFraction(), burnNbr_);
-    forAll(coupledFace_, j)
+    forAll(addr_.coupledFace(), j)
     {
-        if (coupledFace_[j])
+        if (addr_.coupledFace()[j])
         {
-            burnR_[nInternal_ + j] = burnNbr_[j];
+            burnR_[addr_.nInternal() + j] = burnNbr_[j];
         }
     }
     primitivesCurrent_ = false;
 }
 
 
-void Foam::blastFluidSolver::setGeometry()
+void Foam::blastFluidSolver::checkReflectivePatches() const
 {
+    // A mirror state needs conditions that mirror: the scalar fields read
+    // from the case on each reflective patch
+    typedef List<const volScalarField*> fieldList;
+    const fieldList fields
+    (
+        twoPhase_
+      ? fieldList({&p_, alpha1Ptr_.get(), rho1Ptr_.get(), rho2Ptr_.get()})
+      : fieldList({&p_, &rho_})
+    );
     const fvBoundaryMesh& bm = mesh_.boundary();
-    nInternal_ = mesh_.nInternalFaces();
-
-    patchStart_.setSize(bm.size());
-    patchKind_.setSize(bm.size());
-    label n = nInternal_;
     forAll(bm, patchi)
     {
-        const fvPatch& pp = bm[patchi];
-        const word& ptype = pp.type();
-        const word& Utype = U_.boundaryField()[patchi].type();
-        patchStart_[patchi] = n;
-        if (pp.size() == 0 || ptype == "empty")
+        if (addr_.kinds()[patchi] == blastFaceAddressing::REFLECTIVE)
         {
-            patchKind_[patchi] = SKIP;
-            continue;
-        }
-        if (pp.coupled())
-        {
-            patchKind_[patchi] = COUPLED;
-        }
-        else if (ptype == "wedge")
-        {
-            patchKind_[patchi] = WEDGE;
-        }
-        else if
-        (
-            ptype == "wall" || ptype == "symmetry"
-         || ptype == "symmetryPlane"
-         || Utype == "slip" || Utype == "noSlip"
-        )
-        {
-            patchKind_[patchi] = REFLECTIVE;
-            // The scalar fields read from the case
-            typedef List<const volScalarField*> fieldList;
-            checkReflectiveConditions
-            (
-                pp,
-                U_,
-                twoPhase_
-              ? fieldList
-                ({&p_, alpha1Ptr_.get(), rho1Ptr_.get(), rho2Ptr_.get()})
-              : fieldList({&p_, &rho_})
-            );
-        }
-        else
-        {
-            patchKind_[patchi] = GHOST;
-        }
-        n += pp.size();
-    }
-    nFaces_ = n;
-
-    coupledFace_.setSize(nFaces_ - nInternal_);
-    coupledFace_ = false;
-    forAll(bm, patchi)
-    {
-        if (patchKind_[patchi] != COUPLED) continue;
-        SubList<bool>(coupledFace_, bm[patchi].size(), patchStart_[patchi] - nInternal_) = true;
-    }
-
-    own_.setSize(nFaces_);
-    nei_.setSize(nInternal_);
-    Sf_.setSize(nFaces_);
-    magSf_.setSize(nFaces_);
-    w_.setSize(nFaces_, 1);
-    delta_.setSize(nFaces_, Zero);
-
-    const labelUList& owner = mesh_.owner();
-    const labelUList& neighbour = mesh_.neighbour();
-    const vectorField& C = mesh_.C();
-    const surfaceScalarField& weights = mesh_.weights();
-
-    for (label f = 0; f < nInternal_; ++f)
-    {
-        own_[f] = owner[f];
-        nei_[f] = neighbour[f];
-        Sf_[f] = mesh_.Sf()[f];
-        magSf_[f] = mesh_.magSf()[f];
-        w_[f] = weights[f];
-        delta_[f] = C[neighbour[f]] - C[owner[f]];
-    }
-
-    forAll(bm, patchi)
-    {
-        if (patchKind_[patchi] == SKIP) continue;
-        const fvPatch& pp = bm[patchi];
-        const labelUList& fc = pp.faceCells();
-        const vectorField& pSf = mesh_.Sf().boundaryField()[patchi];
-        const scalarField& pmagSf = mesh_.magSf().boundaryField()[patchi];
-        const scalarField& pw = weights.boundaryField()[patchi];
-        const vectorField pdelta(pp.delta());
-        forAll(pp, j)
-        {
-            const label cf = patchStart_[patchi] + j;
-            own_[cf] = fc[j];
-            Sf_[cf] = pSf[j];
-            magSf_[cf] = pmagSf[j];
-            w_[cf] = (patchKind_[patchi] == COUPLED) ? pw[j] : 1;
-            delta_[cf] = pdelta[j];
+            checkReflectiveConditions(bm[patchi], U_, fields);
         }
     }
-
-    // Cell factors: Courant and length (wedge faces excluded)
-    const scalarField& V = mesh_.V();
-    scalarField sumS(mesh_.nCells(), 0);
-    for (label f = 0; f < nInternal_; ++f)
-    {
-        sumS[own_[f]] += magSf_[f];
-        sumS[nei_[f]] += magSf_[f];
-    }
-    forAll(bm, patchi)
-    {
-        if (patchKind_[patchi] == SKIP || patchKind_[patchi] == WEDGE)
-        {
-            continue;
-        }
-        for (label j = 0; j < bm[patchi].size(); ++j)
-        {
-            const label cf = patchStart_[patchi] + j;
-            sumS[own_[cf]] += magSf_[cf];
-        }
-    }
-    const label nD = mesh_.nSolutionD();
-    CoGeom_ = 0.5*sumS/V;
-    cellLength_ = 2*nD*V/sumS;
 }
 
 
@@ -638,25 +529,25 @@ void Foam::blastFluidSolver::growLowOrder()
     lowOrder_.correctBoundaryConditions();
     const scalarField lo0(lowOrder_.primitiveField());
     scalarField& lo = lowOrder_.primitiveFieldRef();
-    for (label f = 0; f < nInternal_; ++f)
+    for (label f = 0; f < addr_.nInternal(); ++f)
     {
-        const label P = own_[f], N = nei_[f];
+        const label P = addr_.own()[f], N = addr_.nei()[f];
         if (lo0[P] > 0 || lo0[N] > 0)
         {
             lo[P] = 1;
             lo[N] = 1;
         }
     }
-    forAll(patchKind_, patchi)
+    forAll(addr_.kinds(), patchi)
     {
-        if (patchKind_[patchi] != COUPLED) continue;
+        if (addr_.kinds()[patchi] != blastFaceAddressing::COUPLED) continue;
         const tmp<scalarField> tnbr =
             lowOrder_.boundaryField()[patchi].patchNeighbourField();
         const scalarField& nbr = tnbr();
-        const label start = patchStart_[patchi];
+        const label start = addr_.patchStart()[patchi];
         forAll(nbr, j)
         {
-            if (nbr[j] > 0) lo[own_[start + j]] = 1;
+            if (nbr[j] > 0) lo[addr_.own()[start + j]] = 1;
         }
     }
     lowOrder_.correctBoundaryConditions();
@@ -674,20 +565,20 @@ void Foam::blastFluidSolver::gaussGrad
     const Field<Type>& vf = phi.primitiveField();
     g = Zero;
 
-    for (label f = 0; f < nInternal_; ++f)
+    for (label f = 0; f < addr_.nInternal(); ++f)
     {
-        const label P = own_[f], N = nei_[f];
-        const Type phif = w_[f]*vf[P] + (1 - w_[f])*vf[N];
-        const GradType s = Sf_[f]*phif;
+        const label P = addr_.own()[f], N = addr_.nei()[f];
+        const Type phif = addr_.w()[f]*vf[P] + (1 - addr_.w()[f])*vf[N];
+        const GradType s = addr_.Sf()[f]*phif;
         g[P] += s;
         g[N] -= s;
     }
-    forAll(patchKind_, patchi)
+    forAll(addr_.kinds(), patchi)
     {
-        if (patchKind_[patchi] == SKIP) continue;
+        if (addr_.kinds()[patchi] == blastFaceAddressing::SKIP) continue;
         const fvPatchField<Type>& pf = phi.boundaryField()[patchi];
-        const label start = patchStart_[patchi];
-        if (patchKind_[patchi] == COUPLED)
+        const label start = addr_.patchStart()[patchi];
+        if (addr_.kinds()[patchi] == blastFaceAddressing::COUPLED)
         {
             // Processor patch fields hold the neighbour cell values:
             // interpolate as on an internal face
@@ -696,8 +587,8 @@ void Foam::blastFluidSolver::gaussGrad
             forAll(pf, j)
             {
                 const label cf = start + j;
-                const label P = own_[cf];
-                g[P] += Sf_[cf]*(w_[cf]*vf[P] + (1 - w_[cf])*nbr[j]);
+                const label P = addr_.own()[cf];
+                g[P] += addr_.Sf()[cf]*(addr_.w()[cf]*vf[P] + (1 - addr_.w()[cf])*nbr[j]);
             }
         }
         else
@@ -705,7 +596,7 @@ void Foam::blastFluidSolver::gaussGrad
             forAll(pf, j)
             {
                 const label cf = start + j;
-                g[own_[cf]] += Sf_[cf]*pf[j];
+                g[addr_.own()[cf]] += addr_.Sf()[cf]*pf[j];
             }
         }
     }
@@ -764,10 +655,10 @@ namespace
 
         forAll(kinds, patchi)
         {
-            if (kinds[patchi] == blastFluidSolver::SKIP) continue;
+            if (kinds[patchi] == blastFaceAddressing::SKIP) continue;
             const fvPatchField<Type>& pf = phi.boundaryField()[patchi];
             const label start = patchStart[patchi];
-            if (kinds[patchi] == blastFluidSolver::COUPLED)
+            if (kinds[patchi] == blastFaceAddressing::COUPLED)
             {
                 const tmp<Field<Type>> tnbr = pf.patchNeighbourField();
                 const Field<Type>& nbr = tnbr();
@@ -823,8 +714,8 @@ void Foam::blastFluidSolver::reconstruct()
 #define RECONSTRUCT(phi, grad, L, R)                                           \
     reconstructField<Limiter>                                                  \
     (                                                                          \
-        phi, grad, nInternal_, own_, nei_, w_, delta_, patchStart_,            \
-        patchKind_, lowOrder_, anyLowOrder, L, R                               \
+        phi, grad, addr_.nInternal(), addr_.own(), addr_.nei(), addr_.w(), addr_.delta(), addr_.patchStart(),            \
+        addr_.kinds(), lowOrder_, anyLowOrder, L, R                               \
     )
     const bool anyLowOrder = anyLowOrder_;
 
@@ -881,7 +772,7 @@ void Foam::blastFluidSolver::faceStates()
 void Foam::blastFluidSolver::faceThermo()
 {
     blastFaceStates& s = faces_;
-    const label n = nFaces_;
+    const label n = addr_.nFaces();
 
     if (twoPhase_)
     {
@@ -935,17 +826,17 @@ void Foam::blastFluidSolver::faceThermo()
 
 void Foam::blastFluidSolver::computeFluxes()
 {
-    flux_->fluxes(0, nInternal_, Sf_, magSf_, faces_, twoPhase_, F_);
+    flux_->fluxes(0, addr_.nInternal(), addr_.Sf(), addr_.magSf(), faces_, twoPhase_, F_);
 
-    forAll(patchKind_, patchi)
+    forAll(addr_.kinds(), patchi)
     {
-        const label start = patchStart_[patchi];
+        const label start = addr_.patchStart()[patchi];
         const label size = mesh_.boundary()[patchi].size();
-        if (patchKind_[patchi] == SKIP)
+        if (addr_.kinds()[patchi] == blastFaceAddressing::SKIP)
         {
             continue;
         }
-        else if (patchKind_[patchi] == WEDGE)
+        else if (addr_.kinds()[patchi] == blastFaceAddressing::WEDGE)
         {
             // Wedge planes: no mass or energy crosses them; the pressure on
             // the two (non-parallel) planes is the axisymmetric source. The
@@ -954,7 +845,7 @@ void Foam::blastFluidSolver::computeFluxes()
             for (label cf = start; cf < start + size; ++cf)
             {
                 F_.rho[cf] = 0;
-                F_.rhoU[cf] = faces_.pL[cf]*Sf_[cf];
+                F_.rhoU[cf] = faces_.pL[cf]*addr_.Sf()[cf];
                 F_.rhoE[cf] = 0;
                 F_.uS[cf] = 0;
                 if (twoPhase_)
@@ -964,11 +855,11 @@ void Foam::blastFluidSolver::computeFluxes()
                 }
             }
         }
-        else if (patchKind_[patchi] != REFLECTIVE)
+        else if (addr_.kinds()[patchi] != blastFaceAddressing::REFLECTIVE)
         {
             flux_->fluxes
             (
-                start, start + size, Sf_, magSf_, faces_, twoPhase_, F_
+                start, start + size, addr_.Sf(), addr_.magSf(), faces_, twoPhase_, F_
             );
         }
         else
@@ -977,7 +868,7 @@ void Foam::blastFluidSolver::computeFluxes()
             // and energy fluxes are exactly zero (conservation to round-off)
             for (label cf = start; cf < start + size; ++cf)
             {
-                const vector n = Sf_[cf]/magSf_[cf];
+                const vector n = addr_.Sf()[cf]/addr_.magSf()[cf];
                 const scalar un = faces_.UL[cf] & n;
                 const scalar pStar = max
                 (
@@ -986,7 +877,7 @@ void Foam::blastFluidSolver::computeFluxes()
                     scalar(0)
                 );
                 F_.rho[cf] = 0;
-                F_.rhoU[cf] = pStar*Sf_[cf];
+                F_.rhoU[cf] = pStar*addr_.Sf()[cf];
                 F_.rhoE[cf] = 0;
                 F_.uS[cf] = 0;
                 if (twoPhase_)
@@ -1004,37 +895,37 @@ void Foam::blastFluidSolver::addQScheme()
 {
     const vectorField& U = U_.primitiveField();
     divU_ = 0;
-    for (label f = 0; f < nInternal_; ++f)
+    for (label f = 0; f < addr_.nInternal(); ++f)
     {
-        const label P = own_[f], N = nei_[f];
-        const scalar phi = (w_[f]*U[P] + (1 - w_[f])*U[N]) & Sf_[f];
+        const label P = addr_.own()[f], N = addr_.nei()[f];
+        const scalar phi = (addr_.w()[f]*U[P] + (1 - addr_.w()[f])*U[N]) & addr_.Sf()[f];
         divU_[P] += phi;
         divU_[N] -= phi;
     }
-    forAll(patchKind_, patchi)
+    forAll(addr_.kinds(), patchi)
     {
-        if (patchKind_[patchi] == SKIP || patchKind_[patchi] == REFLECTIVE)
+        if (addr_.kinds()[patchi] == blastFaceAddressing::SKIP || addr_.kinds()[patchi] == blastFaceAddressing::REFLECTIVE)
         {
             continue;
         }
         const fvPatchVectorField& Ub = U_.boundaryField()[patchi];
-        const label start = patchStart_[patchi];
-        if (patchKind_[patchi] == COUPLED)
+        const label start = addr_.patchStart()[patchi];
+        if (addr_.kinds()[patchi] == blastFaceAddressing::COUPLED)
         {
             const tmp<vectorField> tnbr = Ub.patchNeighbourField();
             const vectorField& nbr = tnbr();
             forAll(Ub, j)
             {
                 const label cf = start + j;
-                const label P = own_[cf];
-                divU_[P] += (w_[cf]*U[P] + (1 - w_[cf])*nbr[j]) & Sf_[cf];
+                const label P = addr_.own()[cf];
+                divU_[P] += (addr_.w()[cf]*U[P] + (1 - addr_.w()[cf])*nbr[j]) & addr_.Sf()[cf];
             }
         }
         else
         {
             forAll(Ub, j)
             {
-                divU_[own_[start + j]] += Ub[j] & Sf_[start + j];
+                divU_[addr_.own()[start + j]] += Ub[j] & addr_.Sf()[start + j];
             }
         }
     }
@@ -1045,30 +936,30 @@ void Foam::blastFluidSolver::addQScheme()
     forAll(q, i)
     {
         const scalar d = divU_[i]/V[i];
-        const scalar l = cellLength_[i];
+        const scalar l = addr_.cellLength()[i];
         q[i] = d < 0 ? rho[i]*l*(CQ_*CQ_*l*d*d - CL_*c_[i]*d) : 0;
     }
     q_.correctBoundaryConditions();
 
-    for (label f = 0; f < nInternal_; ++f)
+    for (label f = 0; f < addr_.nInternal(); ++f)
     {
-        const label P = own_[f], N = nei_[f];
-        const scalar qf = w_[f]*q[P] + (1 - w_[f])*q[N];
-        const vector Uf = w_[f]*U[P] + (1 - w_[f])*U[N];
-        F_.rhoU[f] += qf*Sf_[f];
-        F_.rhoE[f] += qf*(Uf & Sf_[f]);
+        const label P = addr_.own()[f], N = addr_.nei()[f];
+        const scalar qf = addr_.w()[f]*q[P] + (1 - addr_.w()[f])*q[N];
+        const vector Uf = addr_.w()[f]*U[P] + (1 - addr_.w()[f])*U[N];
+        F_.rhoU[f] += qf*addr_.Sf()[f];
+        F_.rhoE[f] += qf*(Uf & addr_.Sf()[f]);
     }
-    forAll(patchKind_, patchi)
+    forAll(addr_.kinds(), patchi)
     {
-        if (patchKind_[patchi] == SKIP) continue;
+        if (addr_.kinds()[patchi] == blastFaceAddressing::SKIP) continue;
         const fvPatchScalarField& qb = q_.boundaryField()[patchi];
         const fvPatchVectorField& Ub = U_.boundaryField()[patchi];
-        const label start = patchStart_[patchi];
+        const label start = addr_.patchStart()[patchi];
         const bool reflective =
         (
-            patchKind_[patchi] == REFLECTIVE || patchKind_[patchi] == WEDGE
+            addr_.kinds()[patchi] == blastFaceAddressing::REFLECTIVE || addr_.kinds()[patchi] == blastFaceAddressing::WEDGE
         );
-        if (patchKind_[patchi] == COUPLED)
+        if (addr_.kinds()[patchi] == blastFaceAddressing::COUPLED)
         {
             const tmp<scalarField> tqn = qb.patchNeighbourField();
             const tmp<vectorField> tUn = Ub.patchNeighbourField();
@@ -1077,21 +968,21 @@ void Foam::blastFluidSolver::addQScheme()
             forAll(qb, j)
             {
                 const label cf = start + j;
-                const label P = own_[cf];
-                const scalar w = w_[cf];
+                const label P = addr_.own()[cf];
+                const scalar w = addr_.w()[cf];
                 const scalar qf = w*q[P] + (1 - w)*qn[j];
-                F_.rhoU[cf] += qf*Sf_[cf];
-                F_.rhoE[cf] += qf*((w*U[P] + (1 - w)*Un[j]) & Sf_[cf]);
+                F_.rhoU[cf] += qf*addr_.Sf()[cf];
+                F_.rhoE[cf] += qf*((w*U[P] + (1 - w)*Un[j]) & addr_.Sf()[cf]);
             }
             continue;
         }
         forAll(qb, j)
         {
             const label cf = start + j;
-            F_.rhoU[cf] += qb[j]*Sf_[cf];
+            F_.rhoU[cf] += qb[j]*addr_.Sf()[cf];
             if (!reflective)
             {
-                F_.rhoE[cf] += qb[j]*(Ub[j] & Sf_[cf]);
+                F_.rhoE[cf] += qb[j]*(Ub[j] & addr_.Sf()[cf]);
             }
         }
     }
@@ -1100,52 +991,52 @@ void Foam::blastFluidSolver::addQScheme()
 
 void Foam::blastFluidSolver::assembleResidual()
 {
-    dRho_ = 0;
-    dRhoU_ = Zero;
-    dRhoE_ = 0;
+    residual_.rho = 0;
+    residual_.rhoU = Zero;
+    residual_.rhoE = 0;
     if (twoPhase_)
     {
-        dAlpha_ = 0;
-        dAlphaRho1_ = 0;
+        residual_.alpha = 0;
+        residual_.alphaRho1 = 0;
     }
     const scalarField* alphaPtr =
         twoPhase_ ? &alpha1Ptr_->primitiveField() : nullptr;
 
-    for (label f = 0; f < nInternal_; ++f)
+    for (label f = 0; f < addr_.nInternal(); ++f)
     {
-        const label P = own_[f], N = nei_[f];
-        dRho_[P] -= F_.rho[f];
-        dRho_[N] += F_.rho[f];
-        dRhoU_[P] -= F_.rhoU[f];
-        dRhoU_[N] += F_.rhoU[f];
-        dRhoE_[P] -= F_.rhoE[f];
-        dRhoE_[N] += F_.rhoE[f];
+        const label P = addr_.own()[f], N = addr_.nei()[f];
+        residual_.rho[P] -= F_.rho[f];
+        residual_.rho[N] += F_.rho[f];
+        residual_.rhoU[P] -= F_.rhoU[f];
+        residual_.rhoU[N] += F_.rhoU[f];
+        residual_.rhoE[P] -= F_.rhoE[f];
+        residual_.rhoE[N] += F_.rhoE[f];
     }
-    for (label cf = nInternal_; cf < nFaces_; ++cf)
+    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
     {
-        const label P = own_[cf];
-        dRho_[P] -= F_.rho[cf];
-        dRhoU_[P] -= F_.rhoU[cf];
-        dRhoE_[P] -= F_.rhoE[cf];
+        const label P = addr_.own()[cf];
+        residual_.rho[P] -= F_.rho[cf];
+        residual_.rhoU[P] -= F_.rhoU[cf];
+        residual_.rhoE[P] -= F_.rhoE[cf];
     }
 
     if (twoPhase_)
     {
         const scalarField& alpha = *alphaPtr;
-        for (label f = 0; f < nInternal_; ++f)
+        for (label f = 0; f < addr_.nInternal(); ++f)
         {
-            const label P = own_[f], N = nei_[f];
-            dAlphaRho1_[P] -= F_.rhoY1[f];
-            dAlphaRho1_[N] += F_.rhoY1[f];
+            const label P = addr_.own()[f], N = addr_.nei()[f];
+            residual_.alphaRho1[P] -= F_.rhoY1[f];
+            residual_.alphaRho1[N] += F_.rhoY1[f];
             // d alpha/dt = -div(alpha u) + alpha div(u)
-            dAlpha_[P] -= F_.alpha[f] - alpha[P]*F_.uS[f];
-            dAlpha_[N] += F_.alpha[f] - alpha[N]*F_.uS[f];
+            residual_.alpha[P] -= F_.alpha[f] - alpha[P]*F_.uS[f];
+            residual_.alpha[N] += F_.alpha[f] - alpha[N]*F_.uS[f];
         }
-        for (label cf = nInternal_; cf < nFaces_; ++cf)
+        for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
         {
-            const label P = own_[cf];
-            dAlphaRho1_[P] -= F_.rhoY1[cf];
-            dAlpha_[P] -= F_.alpha[cf] - alpha[P]*F_.uS[cf];
+            const label P = addr_.own()[cf];
+            residual_.alphaRho1[P] -= F_.rhoY1[cf];
+            residual_.alpha[P] -= F_.alpha[cf] - alpha[P]*F_.uS[cf];
         }
     }
 
@@ -1153,16 +1044,16 @@ void Foam::blastFluidSolver::assembleResidual()
     forAll(V, i)
     {
         const scalar rV = 1/V[i];
-        dRho_[i] *= rV;
-        dRhoU_[i] *= rV;
-        dRhoE_[i] *= rV;
+        residual_.rho[i] *= rV;
+        residual_.rhoU[i] *= rV;
+        residual_.rhoE[i] *= rV;
     }
     if (twoPhase_)
     {
         forAll(V, i)
         {
-            dAlpha_[i] /= V[i];
-            dAlphaRho1_[i] /= V[i];
+            residual_.alpha[i] /= V[i];
+            residual_.alphaRho1[i] /= V[i];
         }
     }
 }
@@ -1199,9 +1090,9 @@ bool Foam::blastFluidSolver::stage(const scalar a, const scalar dt)
     scalarField& rhoE = rhoE_.primitiveFieldRef();
     forAll(rho, i)
     {
-        rho[i] = a*rho0_[i] + b*(rho[i] + dt*dRho_[i]);
-        rhoU[i] = a*rhoU0_[i] + b*(rhoU[i] + dt*dRhoU_[i]);
-        rhoE[i] = a*rhoE0_[i] + b*(rhoE[i] + dt*dRhoE_[i]);
+        rho[i] = a*start_.rho[i] + b*(rho[i] + dt*residual_.rho[i]);
+        rhoU[i] = a*start_.rhoU[i] + b*(rhoU[i] + dt*residual_.rhoU[i]);
+        rhoE[i] = a*start_.rhoE[i] + b*(rhoE[i] + dt*residual_.rhoE[i]);
     }
     if (twoPhase_)
     {
@@ -1211,10 +1102,10 @@ bool Foam::blastFluidSolver::stage(const scalar a, const scalar dt)
         {
             alpha[i] = min
             (
-                max(a*alpha0_[i] + b*(alpha[i] + dt*dAlpha_[i]), scalar(0)),
+                max(a*start_.alpha[i] + b*(alpha[i] + dt*residual_.alpha[i]), scalar(0)),
                 scalar(1)
             );
-            ar1[i] = a*alphaRho10_[i] + b*(ar1[i] + dt*dAlphaRho1_[i]);
+            ar1[i] = a*start_.alphaRho1[i] + b*(ar1[i] + dt*residual_.alphaRho1[i]);
         }
     }
     primitivesCurrent_ = false;
@@ -1322,6 +1213,7 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     ),
     nRetries_(0),
     anyLowOrder_(false),
+    addr_(mesh, U_),
     cutCells_(false),
     lostMass_(0),
     lostEnergy_(0),
@@ -1459,21 +1351,21 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
         )
     );
 
-    setGeometry();
+    checkReflectivePatches();
 
-    faces_.setSize(nFaces_, twoPhase_);
-    F_.setSize(nFaces_, twoPhase_);
-    workE_.setSize(nFaces_, 0);
-    workC2_.setSize(nFaces_, 0);
+    faces_.setSize(addr_.nFaces(), twoPhase_);
+    F_.setSize(addr_.nFaces(), twoPhase_);
+    workE_.setSize(addr_.nFaces(), 0);
+    workC2_.setSize(addr_.nFaces(), 0);
     if (twoPhase_)
     {
-        rho1L_.setSize(nFaces_, 1); rho1R_.setSize(nFaces_, 1);
-        rho2L_.setSize(nFaces_, 1); rho2R_.setSize(nFaces_, 1);
-        alpha0_.setSize(nCells); alphaRho10_.setSize(nCells);
-        dAlpha_.setSize(nCells); dAlphaRho1_.setSize(nCells);
+        rho1L_.setSize(addr_.nFaces(), 1); rho1R_.setSize(addr_.nFaces(), 1);
+        rho2L_.setSize(addr_.nFaces(), 1); rho2R_.setSize(addr_.nFaces(), 1);
+        start_.alpha.setSize(nCells); start_.alphaRho1.setSize(nCells);
+        residual_.alpha.setSize(nCells); residual_.alphaRho1.setSize(nCells);
     }
-    rho0_.setSize(nCells); rhoU0_.setSize(nCells); rhoE0_.setSize(nCells);
-    dRho_.setSize(nCells); dRhoU_.setSize(nCells); dRhoE_.setSize(nCells);
+    start_.rho.setSize(nCells); start_.rhoU.setSize(nCells); start_.rhoE.setSize(nCells);
+    residual_.rho.setSize(nCells); residual_.rhoU.setSize(nCells); residual_.rhoE.setSize(nCells);
 
     if (programmedBurn::present(mesh))
     {
@@ -1547,7 +1439,7 @@ Foam::scalar Foam::blastFluidSolver::maxDeltaT(const scalar maxCo) const
         cutCells_ ? &fluidFractionPtr_->primitiveField() : nullptr;
     const scalar lambda = gasCellsMax
     (
-        phi, 0, [&](const label i) { return (mag(U[i]) + c_[i])*CoGeom_[i]; }
+        phi, 0, [&](const label i) { return (mag(U[i]) + c_[i])*addr_.CoGeom()[i]; }
     );
     return maxCo/max(lambda, VSMALL);
 }
@@ -1564,13 +1456,13 @@ void Foam::blastFluidSolver::prepareRetry
     // everywhere)
     ++nRetries_;
     anyLowOrder_ = true;
-    rho_.primitiveFieldRef() = rho0_;
-    rhoU_.primitiveFieldRef() = rhoU0_;
-    rhoE_.primitiveFieldRef() = rhoE0_;
+    rho_.primitiveFieldRef() = start_.rho;
+    rhoU_.primitiveFieldRef() = start_.rhoU;
+    rhoE_.primitiveFieldRef() = start_.rhoE;
     if (twoPhase_)
     {
-        alpha1Ptr_->primitiveFieldRef() = alpha0_;
-        alphaRho1Ptr_->primitiveFieldRef() = alphaRho10_;
+        alpha1Ptr_->primitiveFieldRef() = start_.alpha;
+        alphaRho1Ptr_->primitiveFieldRef() = start_.alphaRho1;
     }
     if (attempt + 2 < maxAttempts)
     {
@@ -1611,13 +1503,13 @@ void Foam::blastFluidSolver::advance(const scalar dt)
         advanceCutCells(dt);
         return;
     }
-    rho0_ = rho_.primitiveField();
-    rhoU0_ = rhoU_.primitiveField();
-    rhoE0_ = rhoE_.primitiveField();
+    start_.rho = rho_.primitiveField();
+    start_.rhoU = rhoU_.primitiveField();
+    start_.rhoE = rhoE_.primitiveField();
     if (twoPhase_)
     {
-        alpha0_ = alpha1Ptr_->primitiveField();
-        alphaRho10_ = alphaRho1Ptr_->primitiveField();
+        start_.alpha = alpha1Ptr_->primitiveField();
+        start_.alphaRho1 = alphaRho1Ptr_->primitiveField();
     }
 
     // SSP Runge-Kutta (Shu & Osher): stage weights of the old state
@@ -1742,14 +1634,14 @@ void Foam::blastFluidSolver::report(Ostream& os) const
             << " cells lit from " << returnReduce(t0, minOp<scalar>())
             << " s to " << returnReduce(t1, maxOp<scalar>()) << " s" << nl;
     }
-    forAll(patchKind_, patchi)
+    forAll(addr_.kinds(), patchi)
     {
         static const char* kinds[] =
             {"coupled", "reflective", "ghost", "-", "wedge"};
-        if (patchKind_[patchi] != SKIP)
+        if (addr_.kinds()[patchi] != blastFaceAddressing::SKIP)
         {
             os  << "    patch " << mesh_.boundary()[patchi].name() << ": "
-                << kinds[patchKind_[patchi]] << nl;
+                << kinds[addr_.kinds()[patchi]] << nl;
         }
     }
     os  << endl;

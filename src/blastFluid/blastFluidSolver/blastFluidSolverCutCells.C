@@ -67,17 +67,17 @@ void Foam::blastFluidSolver::coupledNeighbourValues
     Field<Type>& values
 ) const
 {
-    values.setSize(nFaces_ - nInternal_);
+    values.setSize(addr_.nFaces() - addr_.nInternal());
     values = Zero;
-    forAll(patchKind_, patchi)
+    forAll(addr_.kinds(), patchi)
     {
-        if (patchKind_[patchi] != COUPLED) continue;
+        if (addr_.kinds()[patchi] != blastFaceAddressing::COUPLED) continue;
         const tmp<Field<Type>> tnbr =
             field.boundaryField()[patchi].patchNeighbourField();
         const Field<Type>& nbr = tnbr();
         forAll(nbr, j)
         {
-            values[patchStart_[patchi] - nInternal_ + j] = nbr[j];
+            values[addr_.patchStart()[patchi] - addr_.nInternal() + j] = nbr[j];
         }
     }
 }
@@ -85,7 +85,7 @@ void Foam::blastFluidSolver::coupledNeighbourValues
 
 void Foam::blastFluidSolver::scaleFluxes(const scalarField& phif)
 {
-    for (label f = 0; f < nFaces_; ++f)
+    for (label f = 0; f < addr_.nFaces(); ++f)
     {
         F_.rho[f] *= phif[f];
         F_.rhoU[f] *= phif[f];
@@ -93,7 +93,7 @@ void Foam::blastFluidSolver::scaleFluxes(const scalarField& phif)
     }
     if (twoPhase_)
     {
-        for (label f = 0; f < nFaces_; ++f)
+        for (label f = 0; f < addr_.nFaces(); ++f)
         {
             F_.rhoY1[f] *= phif[f];
             F_.alpha[f] *= phif[f];
@@ -295,13 +295,13 @@ bool Foam::blastFluidSolver::markDeficientNeighbourhoods
     // (a deficient cell is small: its faces are active)
     for (const label f : w.activeFaces)
     {
-        const label P = own_[f], N = nei_[f];
+        const label P = addr_.own()[f], N = addr_.nei()[f];
         if (deficient[P] > 0 && srdLink(f, small[P], phi[N])) w.extra[N] = true;
         if (deficient[N] > 0 && srdLink(f, small[N], phi[P])) w.extra[P] = true;
     }
-    for (label cf = nInternal_; cf < nFaces_; ++cf)
+    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
     {
-        const label b = cf - nInternal_, P = own_[cf];
+        const label b = cf - addr_.nInternal(), P = addr_.own()[cf];
         if (deficientNbr[b] > 0 && srdLink(cf, w.smallNbr[b], phi[P]))
         {
             w.extra[P] = true;
@@ -474,13 +474,13 @@ void Foam::blastFluidSolver::countNeighbourhoods(const scalarField& phi)
     }
     for (const label f : w.activeFaces)
     {
-        const label P = own_[f], N = nei_[f];
+        const label P = addr_.own()[f], N = addr_.nei()[f];
         if (srdLink(f, small[P], phi[N])) count[N] += 1;
         if (srdLink(f, small[N], phi[P])) count[P] += 1;
     }
-    for (label cf = nInternal_; cf < nFaces_; ++cf)
+    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
     {
-        const label b = cf - nInternal_, P = own_[cf];
+        const label b = cf - addr_.nInternal(), P = addr_.own()[cf];
         if (srdLink(cf, w.smallNbr[b], phi[P])) count[P] += 1;
     }
 }
@@ -528,7 +528,7 @@ void Foam::blastFluidSolver::gatherNeighbourhoods
     };
     for (const label f : w.activeFaces)
     {
-        const label P = own_[f], N = nei_[f];
+        const label P = addr_.own()[f], N = addr_.nei()[f];
         if (intoMembers)
         {
             if (srdLink(f, small[P], phi[N])) add(N, P);
@@ -540,9 +540,9 @@ void Foam::blastFluidSolver::gatherNeighbourhoods
             if (srdLink(f, small[N], phi[P])) add(N, P);
         }
     }
-    for (label cf = nInternal_; cf < nFaces_; ++cf)
+    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
     {
-        const label b = cf - nInternal_, P = own_[cf];
+        const label b = cf - addr_.nInternal(), P = addr_.own()[cf];
         const bool linked =
             intoMembers
           ? srdLink(cf, w.smallNbr[b], phi[P])
@@ -639,10 +639,10 @@ void Foam::blastFluidSolver::fillEmptyCells()
         twoPhase_ ? alpha1Ptr_->primitiveField() : rho_.primitiveField();
     const scalarField& ar1 =
         twoPhase_ ? alphaRho1Ptr_->primitiveField() : rho_.primitiveField();
-    for (label f = 0; f < nInternal_; ++f)
+    for (label f = 0; f < addr_.nInternal(); ++f)
     {
         if (aperture_[f] <= 0) continue;
-        const label P = own_[f], N = nei_[f];
+        const label P = addr_.own()[f], N = addr_.nei()[f];
         if (phi[P] <= 0 && phi[N] > 0)
         {
             add(P, phi[N], rho_[N], rhoU_[N], rhoE_[N], alpha[N], ar1[N]);
@@ -652,9 +652,9 @@ void Foam::blastFluidSolver::fillEmptyCells()
             add(N, phi[P], rho_[P], rhoU_[P], rhoE_[P], alpha[P], ar1[P]);
         }
     }
-    for (label cf = nInternal_; cf < nFaces_; ++cf)
+    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
     {
-        const label b = cf - nInternal_, P = own_[cf];
+        const label b = cf - addr_.nInternal(), P = addr_.own()[cf];
         if (aperture_[cf] > 0 && phi[P] <= 0 && phiB.size() && phiB[b] > 0)
         {
             add
@@ -715,19 +715,19 @@ void Foam::blastFluidSolver::addWallTerms(const scalar a, const scalar dt)
             // Stage content without the wall's work, per cell volume (the
             // momentum with the wall's force: the face pressures alone
             // are not in balance)
-            const scalar m = a*cRho0_[i] + b*(cRho_[i] + dt*dRho_[i]);
+            const scalar m = a*cutStart_.rho[i] + b*(cut_.rho[i] + dt*residual_.rho[i]);
             const vector mU =
-                a*cRhoU0_[i]
-              + b*(cRhoU_[i] + dt*(dRhoU_[i] - p[i]*wallVector_[i]/V[i]));
-            const scalar E = a*cRhoE0_[i] + b*(cRhoE_[i] + dt*dRhoE_[i]);
+                a*cutStart_.rhoU[i]
+              + b*(cut_.rhoU[i] + dt*(residual_.rhoU[i] - p[i]*wallVector_[i]/V[i]));
+            const scalar E = a*cutStart_.rhoE[i] + b*(cut_.rhoE[i] + dt*residual_.rhoE[i]);
             const scalar ein = m > 0 ? E - 0.5*magSqr(mU)/m : 0;
             const scalar cost = b*work/V[i];
             theta = min(scalar(1), max(0.5*ein, scalar(0))/cost);
         }
         const scalar pw = theta*p[i];
         const vector force = pw*wallVector_[i];
-        dRhoU_[i] -= force/V[i];
-        dRhoE_[i] -= theta*work/(dt*V[i]);
+        residual_.rhoU[i] -= force/V[i];
+        residual_.rhoE[i] -= theta*work/(dt*V[i]);
         wallImpulse_[i] += b*dt*force;
         wallWork_[i] += b*theta*work;
         wallPressureImpulse_[i] += b*dt*pw;
@@ -737,7 +737,7 @@ void Foam::blastFluidSolver::addWallTerms(const scalar a, const scalar dt)
         const scalarField& alpha = alpha1Ptr_->primitiveField();
         forAll(V, i)
         {
-            dAlpha_[i] += alpha[i]*sweptVolume_[i]/(dt*V[i]);
+            residual_.alpha[i] += alpha[i]*sweptVolume_[i]/(dt*V[i]);
         }
     }
 }
@@ -798,11 +798,11 @@ bool Foam::blastFluidSolver::cutCellStage
     // phi0, later stages to phi1 (the wall terms look at it)
     const scalarField& phiNow =
         s == 0 ? fluidFractionPtr_->primitiveField() : phiEndPtr_->primitiveField();
-    scalarField& cRho = cRho_;
-    vectorField& cRhoU = cRhoU_;
-    scalarField& cRhoE = cRhoE_;
-    scalarField& cAlpha = cAlpha_;
-    scalarField& cAlphaRho1 = cAlphaRho1_;
+    scalarField& cRho = cut_.rho;
+    vectorField& cRhoU = cut_.rhoU;
+    scalarField& cRhoE = cut_.rhoE;
+    scalarField& cAlpha = cut_.alpha;
+    scalarField& cAlphaRho1 = cut_.alphaRho1;
     contentFromState(phiNow, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
     addWallTerms(a, dt);
 
@@ -810,17 +810,17 @@ bool Foam::blastFluidSolver::cutCellStage
     const label n = mesh_.nCells();
     for (label i = 0; i < n; ++i)
     {
-        cRho[i] = a*cRho0_[i] + b*(cRho[i] + dt*dRho_[i]);
-        cRhoU[i] = a*cRhoU0_[i] + b*(cRhoU[i] + dt*dRhoU_[i]);
-        cRhoE[i] = a*cRhoE0_[i] + b*(cRhoE[i] + dt*dRhoE_[i]);
+        cRho[i] = a*cutStart_.rho[i] + b*(cRho[i] + dt*residual_.rho[i]);
+        cRhoU[i] = a*cutStart_.rhoU[i] + b*(cRhoU[i] + dt*residual_.rhoU[i]);
+        cRhoE[i] = a*cutStart_.rhoE[i] + b*(cRhoE[i] + dt*residual_.rhoE[i]);
     }
     if (twoPhase_)
     {
         for (label i = 0; i < n; ++i)
         {
-            cAlpha[i] = a*cAlpha0_[i] + b*(cAlpha[i] + dt*dAlpha_[i]);
+            cAlpha[i] = a*cutStart_.alpha[i] + b*(cAlpha[i] + dt*residual_.alpha[i]);
             cAlphaRho1[i] =
-                a*cAlphaRho10_[i] + b*(cAlphaRho1[i] + dt*dAlphaRho1_[i]);
+                a*cutStart_.alphaRho1[i] + b*(cAlphaRho1[i] + dt*residual_.alphaRho1[i]);
         }
     }
 
@@ -847,14 +847,14 @@ void Foam::blastFluidSolver::advanceCutCells(const scalar dt)
         primitivesFromConservative(true);
     }
     const scalarField& phi0 = fluidFractionPtr_->primitiveField();
-    contentFromState(phi0, cRho0_, cRhoU0_, cRhoE0_, cAlpha0_, cAlphaRho10_);
-    rho0_ = rho_.primitiveField();
-    rhoU0_ = rhoU_.primitiveField();
-    rhoE0_ = rhoE_.primitiveField();
+    contentFromState(phi0, cutStart_.rho, cutStart_.rhoU, cutStart_.rhoE, cutStart_.alpha, cutStart_.alphaRho1);
+    start_.rho = rho_.primitiveField();
+    start_.rhoU = rhoU_.primitiveField();
+    start_.rhoE = rhoE_.primitiveField();
     if (twoPhase_)
     {
-        alpha0_ = alpha1Ptr_->primitiveField();
-        alphaRho10_ = alphaRho1Ptr_->primitiveField();
+        start_.alpha = alpha1Ptr_->primitiveField();
+        start_.alphaRho1 = alphaRho1Ptr_->primitiveField();
     }
     const scalar lostMass0 = lostMass_, lostEnergy0 = lostEnergy_;
 
@@ -922,7 +922,7 @@ void Foam::blastFluidSolver::enableCutCells(const scalarField& phi)
             fluidFractionPtr_()
         )
     );
-    aperture_.setSize(nFaces_, 1);
+    aperture_.setSize(addr_.nFaces(), 1);
     wallVector_.setSize(mesh_.nCells(), Zero);
     sweptVolume_.setSize(mesh_.nCells(), 0);
     wallWork_.setSize(mesh_.nCells(), 0);
@@ -939,15 +939,15 @@ void Foam::blastFluidSolver::loadApertures
     const surfaceScalarField& aperture
 )
 {
-    for (label f = 0; f < nInternal_; ++f)
+    for (label f = 0; f < addr_.nInternal(); ++f)
     {
         aperture_[f] = aperture[f];
     }
-    forAll(patchKind_, patchi)
+    forAll(addr_.kinds(), patchi)
     {
-        if (patchKind_[patchi] == SKIP) continue;
+        if (addr_.kinds()[patchi] == blastFaceAddressing::SKIP) continue;
         const scalarField& ap = aperture.boundaryField()[patchi];
-        const label start = patchStart_[patchi];
+        const label start = addr_.patchStart()[patchi];
         forAll(ap, j)
         {
             aperture_[start + j] = ap[j];
@@ -964,11 +964,11 @@ void Foam::blastFluidSolver::setFluidFraction
 {
     volScalarField& phiField = fluidFractionPtr_();
     scalarField& phi = phiField.primitiveFieldRef();
-    scalarField& cRho = cRho_;
-    vectorField& cRhoU = cRhoU_;
-    scalarField& cRhoE = cRhoE_;
-    scalarField& cAlpha = cAlpha_;
-    scalarField& cAlphaRho1 = cAlphaRho1_;
+    scalarField& cRho = cut_.rho;
+    vectorField& cRhoU = cut_.rhoU;
+    scalarField& cRhoE = cut_.rhoE;
+    scalarField& cAlpha = cut_.alpha;
+    scalarField& cAlphaRho1 = cut_.alphaRho1;
     contentFromState(phi, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
 
     // Cells that open or close exchange their content with their open
@@ -1026,24 +1026,24 @@ void Foam::blastFluidSolver::setEmbeddedBoundary
     // Compact faces; a face next to a cell without gas at both ends of the
     // step is closed (no gas can pass into the solid)
     loadApertures(aperture);
-    for (label f = 0; f < nInternal_; ++f)
+    for (label f = 0; f < addr_.nInternal(); ++f)
     {
-        const label P = own_[f], N = nei_[f];
+        const label P = addr_.own()[f], N = addr_.nei()[f];
         if ((phi0[P] <= 0 && phi1[P] <= 0) || (phi0[N] <= 0 && phi1[N] <= 0))
         {
             aperture_[f] = 0;
         }
     }
-    forAll(patchKind_, patchi)
+    forAll(addr_.kinds(), patchi)
     {
-        if (patchKind_[patchi] == SKIP) continue;
-        const label start = patchStart_[patchi];
+        if (addr_.kinds()[patchi] == blastFaceAddressing::SKIP) continue;
+        const label start = addr_.patchStart()[patchi];
         const label n = aperture.boundaryField()[patchi].size();
         for (label cf = start; cf < start + n; ++cf)
         {
-            const label P = own_[cf], b = cf - nInternal_;
+            const label P = addr_.own()[cf], b = cf - addr_.nInternal();
             bool shut = phi0[P] <= 0 && phi1[P] <= 0;
-            if (patchKind_[patchi] == COUPLED)
+            if (addr_.kinds()[patchi] == blastFaceAddressing::COUPLED)
             {
                 shut = shut || (phi0Nbr[b] <= 0 && phi1Nbr[b] <= 0);
             }
@@ -1058,19 +1058,19 @@ void Foam::blastFluidSolver::setEmbeddedBoundary
     boolList& reached = reached_;
     reached.setSize(phi0.size());
     reached = false;
-    for (label f = 0; f < nInternal_; ++f)
+    for (label f = 0; f < addr_.nInternal(); ++f)
     {
         if (aperture_[f] <= 0) continue;
-        const label P = own_[f], N = nei_[f];
+        const label P = addr_.own()[f], N = addr_.nei()[f];
         if (phi0[N] > 0) reached[P] = true;
         if (phi0[P] > 0) reached[N] = true;
     }
-    for (label cf = nInternal_; cf < nFaces_; ++cf)
+    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
     {
-        const label b = cf - nInternal_;
-        if (aperture_[cf] > 0 && coupledFace_[b] && phi0Nbr[b] > 0)
+        const label b = cf - addr_.nInternal();
+        if (aperture_[cf] > 0 && addr_.coupledFace()[b] && phi0Nbr[b] > 0)
         {
-            reached[own_[cf]] = true;
+            reached[addr_.own()[cf]] = true;
         }
     }
     scalarField& phi1Ref = phi1Field.primitiveFieldRef();
@@ -1087,9 +1087,9 @@ void Foam::blastFluidSolver::setEmbeddedBoundary
     {
         phi1Field.correctBoundaryConditions();
         coupledNeighbourValues(phi1Field, phi1Nbr);
-        for (label f = 0; f < nInternal_; ++f)
+        for (label f = 0; f < addr_.nInternal(); ++f)
         {
-            const label P = own_[f], N = nei_[f];
+            const label P = addr_.own()[f], N = addr_.nei()[f];
             if
             (
                 (phi0[P] <= 0 && phi1[P] <= 0)
@@ -1099,13 +1099,13 @@ void Foam::blastFluidSolver::setEmbeddedBoundary
                 aperture_[f] = 0;
             }
         }
-        for (label cf = nInternal_; cf < nFaces_; ++cf)
+        for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
         {
-            const label P = own_[cf], b = cf - nInternal_;
+            const label P = addr_.own()[cf], b = cf - addr_.nInternal();
             if
             (
                 (phi0[P] <= 0 && phi1[P] <= 0)
-             || (coupledFace_[b] && phi0Nbr[b] <= 0 && phi1Nbr[b] <= 0)
+             || (addr_.coupledFace()[b] && phi0Nbr[b] <= 0 && phi1Nbr[b] <= 0)
             )
             {
                 aperture_[cf] = 0;
@@ -1115,14 +1115,14 @@ void Foam::blastFluidSolver::setEmbeddedBoundary
 
     // Closure: the wall of a cell closes its open faces
     wallVector_ = Zero;
-    for (label f = 0; f < nInternal_; ++f)
+    for (label f = 0; f < addr_.nInternal(); ++f)
     {
-        wallVector_[own_[f]] -= aperture_[f]*Sf_[f];
-        wallVector_[nei_[f]] += aperture_[f]*Sf_[f];
+        wallVector_[addr_.own()[f]] -= aperture_[f]*addr_.Sf()[f];
+        wallVector_[addr_.nei()[f]] += aperture_[f]*addr_.Sf()[f];
     }
-    for (label cf = nInternal_; cf < nFaces_; ++cf)
+    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
     {
-        wallVector_[own_[cf]] -= aperture_[cf]*Sf_[cf];
+        wallVector_[addr_.own()[cf]] -= aperture_[cf]*addr_.Sf()[cf];
     }
     const scalarField& V = mesh_.V();
     newCell_.setSize(V.size());
@@ -1151,11 +1151,11 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
     volScalarField& phiField = fluidFractionPtr_();
     const scalarField& phi = phiField.primitiveField();
     const scalarField& V = mesh_.V();
-    scalarField& cRho = cRho_;
-    vectorField& cRhoU = cRhoU_;
-    scalarField& cRhoE = cRhoE_;
-    scalarField& cAlpha = cAlpha_;
-    scalarField& cAlphaRho1 = cAlphaRho1_;
+    scalarField& cRho = cut_.rho;
+    vectorField& cRhoU = cut_.rhoU;
+    scalarField& cRhoE = cut_.rhoE;
+    scalarField& cAlpha = cut_.alpha;
+    scalarField& cAlphaRho1 = cut_.alphaRho1;
     contentFromState(phi, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
     auto internal = [&](const label i)
     {
