@@ -196,25 +196,28 @@ namespace
 }
 
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::blastFluidSolver::limiterKind>
+Foam::blastFluidSolver::limiterNames
+({
+    {limiterKind::NONE, "none"},
+    {limiterKind::MINMOD, "minmod"},
+    {limiterKind::VANLEER, "vanLeer"},
+    {limiterKind::VANALBADA, "vanAlbada"},
+    {limiterKind::MCLIM, "MC"},
+    {limiterKind::SUPERBEE, "superbee"},
+});
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::blastFluidSolver::readControls()
 {
     caseChecks::checkInput(fluidDict_);
-    const word lim(fluidDict_.getOrDefault<word>("limiter", "vanLeer"));
-    if (lim == "none") limiter_ = NONE;
-    else if (lim == "minmod") limiter_ = MINMOD;
-    else if (lim == "vanLeer") limiter_ = VANLEER;
-    else if (lim == "vanAlbada") limiter_ = VANALBADA;
-    else if (lim == "MC") limiter_ = MCLIM;
-    else if (lim == "superbee") limiter_ = SUPERBEE;
-    else
-    {
-        FatalIOErrorInFunction(fluidDict_)
-            << "Unknown limiter '" << lim << "' in entry 'limiter'. Valid: "
-            << "none minmod vanLeer vanAlbada MC superbee"
-            << exit(FatalIOError);
-    }
+    // An unknown name: FatalIOError naming the file, the entry and the
+    // valid names
+    limiter_ = limiterNames.getOrDefault("limiter", fluidDict_, VANLEER);
 
     RKorder_ = fluidDict_.getOrDefault<label>("RKorder", 2);
     if (RKorder_ < 1 || RKorder_ > 3)
@@ -1059,6 +1062,40 @@ void Foam::blastFluidSolver::assembleResidual()
 }
 
 
+void Foam::blastFluidSolver::addOutflow(const scalar a, const scalar dt)
+{
+    // Like the state: O <- a O0 + (1 - a)(O + dt F), O0 = 0 at the step's
+    // start, so that the step's outflow is the combination of the stages'
+    // fluxes the state received (a retried step starts it again)
+    scalar fm = 0, fE = 0;
+    const boolList& coupled = addr_.coupledFace();
+    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
+    {
+        if (coupled[cf - addr_.nInternal()]) continue;
+        fm += F_.rho[cf];
+        fE += F_.rhoE[cf];
+    }
+    if (a == 0)
+    {
+        stepOutMass_ = stepOutEnergy_ = 0;
+    }
+    stepOutMass_ = (1 - a)*(stepOutMass_ + dt*fm);
+    stepOutEnergy_ = (1 - a)*(stepOutEnergy_ + dt*fE);
+}
+
+
+Foam::scalar Foam::blastFluidSolver::outflowMass() const
+{
+    return returnReduce(outMass_, sumOp<scalar>());
+}
+
+
+Foam::scalar Foam::blastFluidSolver::outflowEnergy() const
+{
+    return returnReduce(outEnergy_, sumOp<scalar>());
+}
+
+
 bool Foam::blastFluidSolver::stageFluxes()
 {
     if (!primitivesCurrent_ && !primitivesFromConservative(false))
@@ -1083,6 +1120,7 @@ bool Foam::blastFluidSolver::stage(const scalar a, const scalar dt)
         return false;
     }
     assembleResidual();
+    addOutflow(a, dt);
 
     const scalar b = 1 - a;
     scalarField& rho = rho_.primitiveFieldRef();
@@ -1217,6 +1255,10 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     cutCells_(false),
     lostMass_(0),
     lostEnergy_(0),
+    stepOutMass_(0),
+    stepOutEnergy_(0),
+    outMass_(0),
+    outEnergy_(0),
     spreadEnergy_(0),
     primitivesCurrent_(false)
 {
@@ -1527,6 +1569,8 @@ void Foam::blastFluidSolver::advance(const scalar dt)
         }
         if (ok && primitivesFromConservative(false))
         {
+            outMass_ += stepOutMass_;
+            outEnergy_ += stepOutEnergy_;
             if (attempt > 0)
             {
                 Info<< "blastFluidSolver: step to " << mesh_.time().timeName()
@@ -1599,12 +1643,10 @@ Foam::scalar Foam::blastFluidSolver::minDensity() const
 
 void Foam::blastFluidSolver::report(Ostream& os) const
 {
-    static const char* limNames[] =
-        {"none", "minmod", "vanLeer", "vanAlbada", "MC", "superbee"};
     os  << "blastFluidSolver: " << mixture_.size() << " material(s) "
         << mixture_.materials() << nl
         << "    flux " << fluidDict_.getOrDefault<word>("flux", "HLLC")
-        << ", limiter " << limNames[limiter_]
+        << ", limiter " << limiterNames[limiter_]
         << ", SSP RK" << RKorder_
         << ", Q-scheme " << (QActive_ ? "on" : "off");
     if (QActive_)

@@ -690,6 +690,7 @@ void Foam::blastFluidSolver::addWallTerms(const scalar a, const scalar dt)
     const scalar b = 1 - a;
     scaleFluxes(aperture_);
     assembleResidual();
+    addOutflow(a, dt);
 
     // Moving walls: no mass through them, the pressure pushes the gas and
     // does the work p dV; the impulse and work enter the Runge-Kutta
@@ -873,6 +874,8 @@ void Foam::blastFluidSolver::advanceCutCells(const scalar dt)
         }
         if (ok && primitivesFromConservative(false))
         {
+            outMass_ += stepOutMass_;
+            outEnergy_ += stepOutEnergy_;
             if (attempt > 0)
             {
                 Info<< "blastFluidSolver: step to " << mesh_.time().timeName()
