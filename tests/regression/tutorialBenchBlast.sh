@@ -1,6 +1,9 @@
 #!/bin/bash
-# Regression: tutorials/jwlIbFoam/benchBlast -quick (0.1 ms of the bench
-# blast): positivity, gas mass, fragment partition, fragment count and
+# Regression: tutorials/jwlIbFoam/benchBlast -quick (0.2 ms of the bench
+# blast with the crack gas, and the lined hole in lined/ at the same time):
+# issue 14's acceptance (products above 1 % at 5 hole radii or more along at
+# least three radial cracks at 0.2 ms; gas + solid energy within 2 %; the
+# lined versus unlined figures in summary.json), positivity, gas mass, fragment partition, fragment count and
 # fragments in flight, Rosin-Rammler and Swebrec fits against the measured
 # x50/x80; figures from its summary.json, and the engineering figures
 # (KCO, zones, PPV, throw, animation) present and sane
@@ -9,7 +12,9 @@ cd "$JWLIBFOAM_TEST_DIR"
 cp -r "$JWLIBFOAM_TUTORIALS/jwlIbFoam/benchBlast" .
 cd benchBlast
 ./Allclean > /dev/null 2>&1 || true
+start=$(date +%s)
 ./Allrun -quick
+echo ">> ./Allrun -quick (crack gas and lined, concurrently): $(( $(date +%s) - start )) s wall"
 "$JWLIBFOAM_PROJECT/tests/bin/checkSummary" summary.json
 /usr/bin/python3 - <<'PY'
 import json, math, os, sys
@@ -31,6 +36,35 @@ checks = [
     ("max throw > 0, >= mean throw; fragments thrown", get("max throw")[0] > 0
      and get("max throw")[0] >= get("mean throw")[0] and get("fragments thrown")[0] >= 1),
     ("blast.gif written", os.path.getsize("blast.gif") > 1000),
+]
+# Issue 14: gas venting along the cracks, energy, the liner experiment
+tVent = get("end time")[0]
+vent = get("products (> 0.01) at >= 5 hole radii")[0]
+energy = get("energy gained by gas + solid")[0]
+print(f">> venting at t = {tVent:g} s (0.2 ms): radial cracks with products > 1 % at >= 5"
+      f" hole radii: {vent:g} (>= 3)")
+print(f">> gas + solid energy change / initial gas energy: {energy:.3g} (|.| <= 0.02)")
+lu = {k[len("lined versus unlined: "):]: v for k, v in f.items()
+      if k.startswith("lined versus unlined: ")}
+pairs = sorted({k.rsplit(": ", 1)[0] for k in lu if k.endswith((": lined", ": unlined"))})
+for k in pairs:
+    print(f">> lined versus unlined, {k}: unlined {lu[k + ': unlined']:.4g},"
+          f" lined {lu[k + ': lined']:.4g}")
+need = ["broken joint length [m]", "crack reach from the hole centre [m]",
+        "fragments (loose pieces)", "max fragment throw velocity [m/s]",
+        "mass-weighted mean fragment velocity [m/s]", "peak borehole pressure [Pa]"]
+linedVent = lu.get(f"radial cracks with products at >= 5 hole radii at {tVent:g} s: lined", -1)
+checks += [
+    ("end time 0.2 ms", abs(tVent - 2e-4) < 1e-9),
+    (f"products > 1 % at >= 5 hole radii along >= 3 radial cracks ({vent:g})", vent >= 3),
+    (f"gas + solid energy within 2 % ({energy:.3g})", abs(energy) <= 0.02),
+    ("lined versus unlined figures in summary.json (crack length, reach, fragments, throw"
+     " velocities, borehole pressure, both values)",
+     all(f"{k}: {w}" in lu for k in need for w in ("lined", "unlined"))),
+    (f"lined hole: no radial crack with products at >= 5 hole radii ({linedVent:g})",
+     linedVent == 0),
+    ("linedVsUnlined.png written", os.path.exists("linedVsUnlined.png")
+     and os.path.getsize("linedVsUnlined.png") > 1000),
 ]
 for name, ok in checks:
     print(f">> {name}: {'yes' if ok else 'no  <-- FAIL'}")

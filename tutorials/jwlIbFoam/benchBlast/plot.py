@@ -6,8 +6,11 @@ continuous view, with per-triangle velocity, damage and fragment id), the
 broken joints (VTK/cracks_<i>.vtp), the borehole probe
 (postProcessing/boreholeProbe/0/p), the budget (postProcessing/jwlIbFoam/0/
 budget.dat) and the gas fields of the last written time. Writes
-crackPattern.png, gasVenting.png, boreholePressure.png, fragments.png and
-summary.json (blastPost.write_summary).
+crackPattern.png, gasVenting.png, boreholePressure.png, fragments.png,
+crackGas.png (with the crack gas) and summary.json (blastPost.write_summary);
+with the lined hole of Allrun in lined/ (its own summary.json, found by
+name), the lined versus unlined figures in summary.json, linedVsUnlined.dat
+(columns with a header) and linedVsUnlined.png.
 
 Fragment sizes: area A of each fragment (sum of the initial areas of its
 triangles), equivalent size x = sqrt(4 A/pi) (diameter of the circle of the
@@ -324,6 +327,11 @@ phiV = read_field(here, dVent, "fluidFraction", nx * ny).reshape(ny, nx)
 rC = np.hypot(XC - HOLE[0], YC - HOLE[1])
 cellsVent = (phiV > 0) & (apV > ALPHA_VENT) & (rC >= R_VENT)
 ventAngles = list(np.degrees(np.arctan2(YC - HOLE[1], XC - HOLE[0]))[cellsVent])
+# The farthest products in the rock: gas cells behind the free face (the
+# hole, its crushed zone and the cracks the mesh resolves) and, below, the
+# crack gas
+inRock = (phiV > 0) & (apV > ALPHA_VENT) & (YC < BENCH[3])
+meshVentReach = rC[inRock].max() if inRock.any() else 0.0
 crackFile = lambda i: os.path.join(here, "VTK", f"cracks_{i}.vtp")
 crackGasOn = "crackGas" in read_vtp_line_fields(crackFile(iVent))
 netAlphaName = "alpha.products"
@@ -523,9 +531,96 @@ figs = [
     figure(f"products (> {ALPHA_VENT:g}) at >= 5 hole radii at t = {tVent:g} s: "
            "radial cracks", ventCracks),
     figure("products in the crack gas: farthest from the hole centre [m]", netVentReach),
+    figure(f"products (> {ALPHA_VENT:g}) in the rock at t = {tVent:g} s: farthest from the hole"
+           " centre, gas cells or crack gas [m]", max(meshVentReach, netVentReach)),
     figure("lined hole (crackVenting false, no crackGas)", float(lined)),
 ]
 if crackGasOn:
     figs += [figure("crack gas: joints at the end", nNet[-1]),
              figure("crack gas: highest pressure over the run [Pa]", max(pMaxN))]
+
+# ------------------------------------------------ lined versus unlined
+# The lined hole run by Allrun in the generated copy lined/ (its own
+# plot.py wrote lined/summary.json): the figures the liner experiments
+# compare, side by side, found by the start of their names
+COMPARE = [
+    ("broken joint length [m]", "broken joint length"),
+    ("broken joints", "broken joints"),
+    ("crack reach from the hole centre [m]", "crack reach from the hole centre"),
+    ("cracked zone radius [m]", "cracked zone radius"),
+    ("crushed zone radius [m]", "crushed zone radius"),
+    ("fragments (loose pieces)", "fragments (loose pieces"),
+    ("fragments in flight (> 5 m/s)", "fragments in flight"),
+    ("max fragment throw velocity [m/s]", "max fragment throw velocity"),
+    ("mass-weighted mean fragment velocity [m/s]", "mass-weighted mean fragment velocity"),
+    ("max throw distance from the face [m]", "max throw distance"),
+    ("mean throw distance [m]", "mean throw distance"),
+    ("x50 measured [m]", "x50 measured"),
+    ("peak borehole pressure [Pa]", "peak pressure at the borehole centre"),
+    ("borehole pressure at the end [Pa]", "borehole pressure at the end"),
+    (f"radial cracks with products at >= 5 hole radii at {tVent:g} s",
+     f"products (> {ALPHA_VENT:g}) at >= 5 hole radii"),
+    (f"products reach in the rock at {tVent:g} s [m]", f"products (> {ALPHA_VENT:g}) in the rock"),
+    ("products reach in the crack gas [m]", "products in the crack gas: farthest"),
+    ("gas + solid energy change / initial gas energy", "energy gained by gas + solid"),
+]
+linedSummary = _case("lined", "summary.json")
+if not lined and os.path.exists(linedSummary):
+    def by_start(figures, start):
+        hit = [f for f in figures if f["name"].startswith(start)]
+        if not hit:
+            sys.exit(f"plot.py: no figure '{start}...' for the lined versus unlined table")
+        return hit[0]["value"]
+    linedFigs = json.load(open(linedSummary))["figures"]
+    rows = [(label, by_start(figs, start), by_start(linedFigs, start))
+            for label, start in COMPARE]
+    tLined = by_start(linedFigs, "end time")
+    # the same round to the same time, or the comparison means nothing
+    figs.append(figure("lined versus unlined: lined end time [s] (= unlined)", tLined,
+                       tEnd, 1e-9, relative=True))
+    figs.append(figure("lined versus unlined: lined hole (lined/summary.json, crackVenting"
+                       " false, no crackGas)", by_start(linedFigs, "lined hole"), 1, 0))
+    for label, u, l in rows:
+        figs.append(figure(f"lined versus unlined: {label}: unlined", u))
+        figs.append(figure(f"lined versus unlined: {label}: lined", l))
+    with open(os.path.join(here, "linedVsUnlined.dat"), "w") as fh:
+        fh.write(f"# benchBlast at t = {tEnd:g} s: unlined (this case) and lined (lined/)\n"
+                 "# figure\tunlined\tlined\tlined/unlined\n")
+        for label, u, l in rows:
+            fh.write(f"{label}\t{u:.6g}\t{l:.6g}\t"
+                     f"{(l / u if u else float('nan')):.4g}\n")
+    # Picture: borehole pressure of both, the ratios, the broken joints
+    probeL = np.loadtxt(_case("lined", "postProcessing", "boreholeProbe", "0", "p"))
+    fig, axs = plt.subplots(1, 3, figsize=(16, 5), gridspec_kw={"width_ratios": [1, 1.2, 1]})
+    ax = axs[0]
+    ax.semilogy(tP * 1e6, pP, "r-", label="unlined")
+    ax.semilogy(probeL[:, 0] * 1e6, probeL[:, 1], "b-", label="lined")
+    ax.set_xlabel("t [us]"); ax.set_ylabel("p at the borehole centre [Pa]")
+    ax.legend(); ax.grid(True, which="both", alpha=0.3)
+    ax.set_title("Borehole pressure", fontsize=9)
+    ax = axs[1]
+    ratio = [l / u if u else np.nan for _, u, l in rows]
+    yy = np.arange(len(rows))
+    ax.barh(yy, ratio, color=["tab:blue" if r <= 1 else "tab:red" for r in ratio])
+    ax.axvline(1, color="k", lw=0.8)
+    ax.set_yticks(yy)
+    ax.set_yticklabels([f"{lab} ({u:.3g} / {l:.3g})" for lab, u, l in rows], fontsize=6)
+    ax.invert_yaxis()
+    ax.set_xlabel("lined / unlined")
+    ax.set_title(f"t = {tEnd * 1e6:.0f} us (unlined / lined values)", fontsize=9)
+    ax = axs[2]
+    linesL = read_vtp_lines(_case("lined", "VTK", os.path.basename(crackFile(len(steps) - 1))))
+    if len(crackLines):
+        ax.add_collection(LineCollection(crackLines, colors="r", linewidths=0.4,
+                                         label=f"unlined: {len(crackLines)}"))
+    if len(linesL):
+        ax.add_collection(LineCollection(linesL, colors="b", linewidths=0.4,
+                                         label=f"lined: {len(linesL)}"))
+    ax.set_xlim(BENCH[0], BENCH[1]); ax.set_ylim(BENCH[2], 0.12)
+    ax.set_aspect("equal"); ax.legend(fontsize=7, loc="lower left")
+    ax.set_title("Broken joints at the end (current positions)", fontsize=9)
+    fig.suptitle("Liner experiment: the hole unlined (gas in the cracks) and lined "
+                 "(stress wave and hole pressure only)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(here, "linedVsUnlined.png"), dpi=130)
 write_summary(os.path.join(here, "summary.json"), "jwlIbFoam/benchBlast", figs)
