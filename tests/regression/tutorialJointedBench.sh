@@ -27,7 +27,7 @@ print(f">> joint set in the mesh: {n} joints; its share of the broken length"
 ref = sys.argv[1]
 if os.path.exists(ref):
     b = {x["name"]: x["value"] for x in json.load(open(ref))["figures"]}
-    print(f">> beside benchBlast -quick (no joints, its own mesh, 0.1 ms against 75 us): fragments {get(f, 'fragments (loose'):.0f}"
+    print(f">> beside benchBlast -quick -crackGas (no joints, its own mesh, 0.2 ms against 75 us): fragments {get(f, 'fragments (loose'):.0f}"
           f" vs {get(b, 'fragments (loose'):.0f}, x50 {get(f, 'x50 measured'):.4f} m vs"
           f" {get(b, 'x50 measured'):.4f} m, broken joints {get(f, 'broken joints'):.0f}"
           f" vs {get(b, 'broken joints'):.0f}")
