@@ -205,6 +205,15 @@ void Foam::crackNetwork::setVoids()
     voidCV_.transfer(cv);
     voidCornerStart_.transfer(cornerStart);
     const label nc = voidCornerStart_.last();
+    voidNode_.setSize(nc);
+    forAll(voidVertex_, k)
+    {
+        const label s = vertexNodeStart_[voidVertex_[k]];
+        for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
+        {
+            voidNode_[c] = vertexNode_[s + c - voidCornerStart_[k]];
+        }
+    }
     voidArea_.setSize(voidVertex_.size());
     voidArea_ = 0;
     voidGrad_.setSize(nc);
@@ -229,15 +238,14 @@ Foam::scalar Foam::crackNetwork::voidArea
     // counts for nothing and pushes nothing; the gradient of that area is
     // the force per unit pressure on each corner (the volume's gradient,
     // as for the gaps: the gas pays exactly the work it does)
-    const label v = voidVertex_[k];
-    const label s = vertexNodeStart_[v];
-    const label K = vertexNodeStart_[v + 1] - s;
-    const vector2D& o = x[vertexNode_[s]];
+    const label* node = &voidNode_[voidCornerStart_[k]];
+    const label K = voidCornerStart_[k + 1] - voidCornerStart_[k];
+    const vector2D& o = x[node[0]];
     scalar twiceA = 0;
     for (label i = 0; i < K; ++i)
     {
-        const vector2D a = x[vertexNode_[s + i]] - o;
-        const vector2D b = x[vertexNode_[s + (i + 1)%K]] - o;
+        const vector2D a = x[node[i]] - o;
+        const vector2D b = x[node[(i + 1)%K]] - o;
         twiceA += a.x()*b.y() - a.y()*b.x();
     }
     const scalar A = 0.5*twiceA - sqr(minAperture_);
@@ -245,8 +253,8 @@ Foam::scalar Foam::crackNetwork::voidArea
     {
         for (label i = 0; i < K; ++i)
         {
-            const vector2D& prev = x[vertexNode_[s + (i + K - 1)%K]];
-            const vector2D& next = x[vertexNode_[s + (i + 1)%K]];
+            const vector2D& prev = x[node[(i + K - 1)%K]];
+            const vector2D& next = x[node[(i + 1)%K]];
             grad[i] =
                 A > 0
               ? 0.5*vector2D(next.y() - prev.y(), prev.x() - next.x())
@@ -289,7 +297,10 @@ bool Foam::crackNetwork::setOpenJoints(const boolList& open)
             << topo_.nJoints() << " joints" << exit(FatalError);
     }
     const labelList& nodeVertex = topo_.nodeVertex();
-    boolList vo(vertexOpen_.size(), false);
+    // (called every step: the flags go into a kept work list)
+    boolList& vo = vertexOpenNew_;
+    vo.setSize(vertexOpen_.size());
+    vo = false;
     forAll(open, j)
     {
         if (!open[j]) continue;
@@ -298,7 +309,7 @@ bool Foam::crackNetwork::setOpenJoints(const boolList& open)
         vo[nodeVertex[jn[1]]] = true;
     }
     if (vo == vertexOpen_) return false;
-    vertexOpen_.transfer(vo);
+    vertexOpen_.swap(vo);
     const labelList oldVertex(voidVertex_);
     setVoids();
     return voidVertex_ != oldVertex;
@@ -562,10 +573,9 @@ void Foam::crackNetwork::beginStep
     voidForce_ = Zero;
     forAll(voidVertex_, k)
     {
-        const label s = vertexNodeStart_[voidVertex_[k]];
         for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
         {
-            voidDLast_[c] = d[vertexNode_[s + c - voidCornerStart_[k]]];
+            voidDLast_[c] = d[voidNode_[c]];
         }
     }
 }
@@ -692,11 +702,10 @@ void Foam::crackNetwork::updateForces
         scalar P = 0;
         for (label c = c0; c < c1; ++c) P += p_[voidCV_[c]];
         P /= c1 - c0;
-        const label s = vertexNodeStart_[voidVertex_[k]];
         for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
         {
             const vector2D f = P*voidGrad_[c];
-            nodeForces[vertexNode_[s + c - voidCornerStart_[k]]] +=
+            nodeForces[voidNode_[c]] +=
                 f - voidForce_[c];
             voidForce_[c] = f;
         }
@@ -777,11 +786,10 @@ Foam::scalar Foam::crackNetwork::stableSubStep
             stiff += Gamma_[j]*p_[j]/(m*m*V_[j]);
             Vmin = min(Vmin, V_[j]);
         }
-        const label s = vertexNodeStart_[voidVertex_[k]];
         scalar g2im = 0, rate = 0;
         for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
         {
-            const label node = vertexNode_[s + c - voidCornerStart_[k]];
+            const label node = voidNode_[c];
             g2im = max(g2im, magSqr(voidGrad_[c])*invMass[node]);
             rate += voidGrad_[c] & v[node];
         }
@@ -814,11 +822,10 @@ void Foam::crackNetwork::addWork(const UList<vector2D>& d)
     // pressures) did P dA, dA = sum G_c.dd_c: each share pays p_j/m dA
     forAll(voidVertex_, k)
     {
-        const label s = vertexNodeStart_[voidVertex_[k]];
         scalar dA = 0;
         for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
         {
-            const vector2D& dn = d[vertexNode_[s + c - voidCornerStart_[k]]];
+            const vector2D& dn = d[voidNode_[c]];
             dA += voidGrad_[c] & (dn - voidDLast_[c]);
             voidDLast_[c] = dn;
         }
