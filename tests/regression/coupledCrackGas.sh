@@ -131,6 +131,17 @@ elif how == "joint":   # the first joint replaced by one the solid has not broke
     broken = re.search(r"\nbroken\s+\d+\s*\(([^)]*)\)", b).group(1).split()
     j = broken.index("0")
     t2 = re.sub(r"(\njoints\s+\d+\s*\(\s*)\d+", lambda m: f"{m.group(1)}{j}", t, count=1)
+elif how in ("m1roundoff", "m1negative"):
+    # m1 of the first control volume with gas: -1e-12 m (the round-off a
+    # material's fluxes leave, which must restart) or -1e-3 m (refused)
+    def values(key):
+        g = re.search(r"\n" + key + r"\s+\d+\s*\(([^)]*)\)", t)
+        return g, g.group(1).split()
+    gm, m = values("m")
+    g1, m1 = values("m1")
+    i = next(i for i, v in enumerate(m) if float(v) > 0)
+    m1[i] = repr(-(1e-12 if how == "m1roundoff" else 1e-3)*float(m[i]))
+    t2 = t[:g1.start(1)] + "\n" + "\n".join(m1) + "\n" + t[g1.end(1):]
 t2 != t or sys.exit(f"damage {how}: nothing replaced")
 open(f, "w").write(t2)
 PY
@@ -149,6 +160,20 @@ damage mass && { jwlIbFoam > log.mass 2>&1; check "crack gas file with a negativ
     "FOAM FATAL IO ERROR" "$state" "entry 'm': control volume 0"; }
 damage joint && { jwlIbFoam > log.joint 2>&1; check "crack gas file with a joint the solid has not broken" log.joint \
     "FOAM FATAL IO ERROR" "$state" "entry 'joints': joint [0-9]* holds crack gas but is not broken"; }
+damage m1negative && { jwlIbFoam > log.m1 2>&1; check "crack gas file with a negative material-1 mass" log.m1 \
+    "FOAM FATAL IO ERROR" "$state" "entry 'm1': control volume [0-9]*"; }
+# A material-1 mass negative by round-off (benchBlast wrote m1 = -1.07e-41
+# with m of order 1e-6) is a state the network writes: it restarts
+damage m1roundoff && {
+    foamDictionary -entry endTime -set 0.0003 system/controlDict > /dev/null
+    if jwlIbFoam > log.m1roundoff 2>&1 && grep -q '^Crack gas restarted' log.m1roundoff; then
+        echo ">> crack gas file with m1 = -1e-12 m (round-off): restarted and ran to 0.3 ms"
+    else
+        echo ">> crack gas file with m1 = -1e-12 m (round-off): refused or failed  <-- FAIL"
+        grep -A4 FATAL log.m1roundoff | head -8; bad=1
+    fi
+    rm -rf 0.0003*
+}
 rm -f $state
 jwlIbFoam > log.missing 2>&1; check "crack gas file missing (the solid has broken joints)" log.missing \
     "FOAM FATAL ERROR" "crack gas state \".*$state\" is missing"

@@ -64,6 +64,21 @@ last=$(timeDirs diverge | awk '{print $NF}')
     || fail "divergence: last written time '$last' is not before the failed time $t"
 complete diverge/$last || fail "divergence: $last lacks one of: $stateFiles"
 echo ">> no time directory for the failed time $t; last written $last complete ($stateFiles)"
+# The budget keeps every step done before the stop, each row whole (a
+# FatalError exits without unwinding: unflushed rows were lost, the file
+# cut mid-row)
+/usr/bin/python3 - diverge <<'PY' || fail "divergence: budget.dat lost rows or was cut"
+import re, sys
+case = sys.argv[1]
+rows = [l.split() for l in open(f"{case}/postProcessing/jwlIbFoam/0/budget.dat") if not l.startswith("#")]
+names = open(f"{case}/postProcessing/jwlIbFoam/0/budget.dat").readline().split(":")[1].split()
+steps = [float(m.group(1)) for m in re.finditer(r"^Time = (\S+)", open(f"{case}/log.jwlIbFoam").read(), re.M)]
+whole = all(len(r) == len(names) for r in rows)
+err = abs(float(rows[-1][0]) - steps[-1]) / steps[-1]
+print(f">> divergence: budget.dat rows {len(rows)}, all with {len(names)} columns: {whole}; "
+      f"last row t = {rows[-1][0]} vs the last step done {steps[-1]} (relative {err:.1e}, tolerance 1e-6)")
+sys.exit(0 if whole and err < 1e-6 else 1)
+PY
 setEntry diverge adjustTimeStep yes
 # (two failed steps on: Time stops within half a step of endTime, and the
 # first step restarts with the deltaT of the last)

@@ -300,6 +300,13 @@ int main(int argc, char *argv[])
             }
         }
 
+        // Every row flushed: a run that stops (a diverged solid: FatalError
+        // exits without unwinding) kept only whole buffers, cut mid-row
+        energyLog.flush();
+        fragmentLog.flush();
+        reactionLog.flush();
+        crackLog.flush();
+
         const scalar input = e.initial + e.external + e.gravity;
         Info<< "    energy: kinetic " << e.kinetic << " elastic " << e.elastic
             << " fracture " << e.fracture << " damping " << e.damping

@@ -4,7 +4,7 @@
 Reads the solid's VTK series written by jwlIbFoam (VTK/femdem_<i>.vtu: the
 continuous view, with per-triangle velocity, damage and fragment id), the
 broken joints (VTK/cracks_<i>.vtp), the borehole probe
-(postProcessing/boreholeProbe/0/p), the budget (postProcessing/jwlIbFoam/0/
+(postProcessing/boreholeProbe/<t>/p), the budget (postProcessing/jwlIbFoam/<t>/
 budget.dat) and the gas fields of the last written time. Writes
 crackPattern.png, gasVenting.png, boreholePressure.png, fragments.png,
 crackGas.png (with the crack gas) and summary.json (blastPost.write_summary);
@@ -42,7 +42,8 @@ sys.path.insert(0, os.path.join(os.environ.get(
     "JWLIBFOAM_TUTORIALS", os.path.join(os.path.dirname(__file__), "..", "..")),
     "jwlIbFoam", "common"))
 from blastPost import (read_field, write_summary, figure, latest_time, log_table,
-                       budget_table, solid_energy, gas_energy, gas_mass)
+                       budget_table, joined_rows, solid_energy, gas_energy,
+                       gas_mass)
 import blastFigures as bf
 from blastVtk import read_vtu, read_vtp_lines, read_vtp_line_fields
 
@@ -227,11 +228,11 @@ throwDist = land[:, 1] - BENCH[3]          # beyond the free face y = 0
 maxThrow = throwDist.max()
 
 # Borehole pressure (probe at the hole centre)
-probe = np.loadtxt(os.path.join(here, "postProcessing", "boreholeProbe", "0", "p"))
+probe = joined_rows(here, "boreholeProbe", "p")
 tP, pP = probe[:, 0], probe[:, 1]
 
 # Budget: gas + solid energy, gas mass
-b = budget_table(os.path.join(here, "postProcessing", "jwlIbFoam", "0", "budget.dat"))
+b = budget_table(here)    # every start time's budget.dat, restarts joined
 Etot = gas_energy(b) + solid_energy(b)
 Echarge = Etot[0]                 # the products' energy dominates (air 0.3 %)
 Egain = (Etot[-1] - Etot[0]) / Echarge
@@ -590,7 +591,7 @@ if not lined and os.path.exists(linedSummary):
             fh.write(f"{label}\t{u:.6g}\t{l:.6g}\t"
                      f"{(l / u if u else float('nan')):.4g}\n")
     # Picture: borehole pressure of both, the ratios, the broken joints
-    probeL = np.loadtxt(_case("lined", "postProcessing", "boreholeProbe", "0", "p"))
+    probeL = joined_rows(_case("lined"), "boreholeProbe", "p")
     fig, axs = plt.subplots(1, 3, figsize=(16, 5), gridspec_kw={"width_ratios": [1, 1.2, 1]})
     ax = axs[0]
     ax.semilogy(tP * 1e6, pP, "r-", label="unlined")

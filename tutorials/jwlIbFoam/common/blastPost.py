@@ -4,7 +4,10 @@ read_field(case, time, name): internal field of an ascii OpenFOAM field as a
 numpy array (scalars: shape (n,), vectors: shape (n, 3)); a uniform field
 needs n.
 read_exact(case, time): columns of postProcessing/exactRiemann/<time>/exact.dat
-budget_table(path), solid_energy(b): budget.dat columns by name;
+budget_table(path or case), solid_energy(b): budget.dat columns by name
+    (of a case: every start time's, joined across restarts);
+joined_rows(case, function, file): a postProcessing time series joined
+    across restarts;
 log_table(logfile): per-step (time, dt, maxP, mass, energy, minRho, minP)
     from a jwlIbFoam log
 write_summary(path, case, figures): summary.json as doc/developing.md says.
@@ -84,11 +87,66 @@ def log_table(logfile):
     return np.array(rows)
 
 
+def _rows(path, ncol=None):
+    """Numeric rows of a column file ('#' comments), the rows without ncol
+    values left out (a run killed mid-row leaves one cut short)"""
+    rows = []
+    with open(path) as fh:
+        for line in fh:
+            if line.startswith("#") or not line.strip():
+                continue
+            v = line.replace("(", " ").replace(")", " ").split()
+            if ncol is None:
+                ncol = len(v)
+            if len(v) == ncol:
+                rows.append([float(x) for x in v])
+    return np.array(rows).reshape(-1, ncol or 0)
+
+
+def series_files(case, *parts):
+    """The files postProcessing/<parts[0]>/<startTime>/<parts[1:]> of a
+    case, in the order of their start times: a run writes its function
+    outputs under its start time, so a restart adds a directory"""
+    base = os.path.join(case, "postProcessing", parts[0])
+    found = []
+    for d in os.listdir(base) if os.path.isdir(base) else []:
+        f = os.path.join(base, d, *parts[1:])
+        try:
+            found.append((float(d), f))
+        except ValueError:
+            continue
+        if not os.path.isfile(f):
+            found.pop()
+    if not found:
+        raise RuntimeError(f"{os.path.join(base, '<time>', *parts[1:])}: "
+                           "no such file for any start time")
+    return sorted(found)
+
+
+def joined_rows(case, *parts):
+    """The rows (first column the time) of the files series_files finds,
+    joined across restarts: each run's rows up to the next run's start
+    time, where the next run took over"""
+    files = series_files(case, *parts)
+    out = []
+    for k, (t0, f) in enumerate(files):
+        data = _rows(f, out[0].shape[1] if out else None)
+        if k + 1 < len(files):
+            data = data[data[:, 0] <= files[k + 1][0] * (1 + 1e-12)]
+        out.append(data)
+    return np.vstack(out)
+
+
 def budget_table(path):
     """Columns of a jwlIbFoam budget.dat by the names of its header line
-    ('# per unit depth: time dt gasMass ...'), as a dict of arrays"""
+    ('# per unit depth: time dt gasMass ...'), as a dict of arrays; a case
+    directory instead of a file: the budget.dat of every start time,
+    joined across restarts (joined_rows)"""
+    files = [path]
+    if os.path.isdir(path):
+        files = [f for _, f in series_files(path, "jwlIbFoam", "budget.dat")]
     names = None
-    with open(path) as fh:
+    with open(files[0]) as fh:
         for line in fh:
             if not line.startswith("#"):
                 break
@@ -96,8 +154,14 @@ def budget_table(path):
             if "time" in head:
                 names = head
     if names is None:
-        raise RuntimeError(f"{path}: no header line with column names")
-    data = np.atleast_2d(np.loadtxt(path))
+        raise RuntimeError(f"{files[0]}: no header line with column names")
+    if os.path.isdir(path):
+        data = joined_rows(path, "jwlIbFoam", "budget.dat")
+    else:
+        data = _rows(path, len(names))
+    if data.shape[1] != len(names):
+        raise RuntimeError(f"{files[0]}: {data.shape[1]} columns, "
+                           f"{len(names)} names in the header")
     return {n: data[:, i] for i, n in enumerate(names)}
 
 

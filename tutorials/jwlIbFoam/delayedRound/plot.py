@@ -47,7 +47,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 tutorials = os.environ.get("JWLIBFOAM_TUTORIALS", os.path.join(here, "..", ".."))
 sys.path.insert(0, os.path.join(tutorials, "jwlIbFoam", "common"))
 from blastPost import (read_field, write_summary, figure, budget_table,  # noqa: E402
-                       solid_energy, gas_energy, log_table)
+                       solid_energy, gas_energy, log_table, joined_rows)
 import blastFigures as bf  # noqa: E402
 from blastVtk import read_vtu, read_vtp_lines  # noqa: E402
 
@@ -96,8 +96,7 @@ def case_geometry(case):
 
 def probe_table(case, field):
     """Times and values (one column per probe) of postProcessing/holeProbes"""
-    data = np.loadtxt(os.path.join(case, "postProcessing", "holeProbes", "0", field),
-                      comments="#")
+    data = joined_rows(case, "holeProbes", field)    # restarts joined
     return data[:, 0], data[:, 1:]
 
 
@@ -217,7 +216,7 @@ def face_motion(case, t):
 
 
 def energy(case):
-    b = budget_table(os.path.join(case, "postProcessing", "jwlIbFoam", "0", "budget.dat"))
+    b = budget_table(case)    # every start time's budget.dat, restarts joined
     Etot = gas_energy(b) + solid_energy(b)
     return (Etot[-1] - Etot[0]) / Etot[0], b
 
