@@ -7,7 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "blastFluidSolver.H"
-#include "blastLimiters.H"
+#include "blastLimiter.H"
 #include "surfaceFields.H"
 #include "OStringStream.H"
 #include "caseChecks.H"
@@ -196,28 +196,14 @@ namespace
 }
 
 
-// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
-
-const Foam::Enum<Foam::blastFluidSolver::limiterKind>
-Foam::blastFluidSolver::limiterNames
-({
-    {limiterKind::NONE, "none"},
-    {limiterKind::MINMOD, "minmod"},
-    {limiterKind::VANLEER, "vanLeer"},
-    {limiterKind::VANALBADA, "vanAlbada"},
-    {limiterKind::MCLIM, "MC"},
-    {limiterKind::SUPERBEE, "superbee"},
-});
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::blastFluidSolver::readControls()
 {
     caseChecks::checkInput(fluidDict_);
-    // An unknown name: FatalIOError naming the file, the entry and the
-    // valid names
-    limiter_ = limiterNames.getOrDefault("limiter", fluidDict_, VANLEER);
+    // Run-time selected (entry 'limiter'); an unknown name: FatalIOError
+    // naming the file, the entry and the valid names
+    limiter_ = blastLimiter::New(fluidDict_);
 
     RKorder_ = fluidDict_.getOrDefault<label>("RKorder", 2);
     if (RKorder_ < 1 || RKorder_ > 3)
@@ -612,163 +598,59 @@ void Foam::blastFluidSolver::gaussGrad
 }
 
 
-namespace Foam
-{
-namespace
-{
-    //- Limited reconstruction of one field on internal and coupled faces;
-    //  ghost and reflective faces get L = owner value, R = patch value
-    template<class Limiter, class Type, class GradType>
-    void reconstructField
-    (
-        const GeometricField<Type, fvPatchField, volMesh>& phi,
-        const GeometricField<GradType, fvPatchField, volMesh>& grad,
-        const label nInternal,
-        const labelList& own,
-        const labelList& nei,
-        const scalarField& w,
-        const vectorField& delta,
-        const labelList& patchStart,
-        const List<blastFluidSolver::patchKind>& kinds,
-        const volScalarField& lowOrder,
-        const bool anyLowOrder,
-        UList<Type>& L,
-        UList<Type>& R
-    )
-    {
-        const Field<Type>& vf = phi.primitiveField();
-        const Field<GradType>& g = grad.primitiveField();
-        const scalarField& lo = lowOrder.primitiveField();
-
-        for (label f = 0; f < nInternal; ++f)
-        {
-            const label P = own[f], N = nei[f];
-            if (anyLowOrder && (lo[P] > 0 || lo[N] > 0))
-            {
-                L[f] = vf[P];
-                R[f] = vf[N];
-                continue;
-            }
-            blastLimiters::limitedPair<Limiter>
-            (
-                vf[P], vf[N], delta[f] & g[P], delta[f] & g[N], w[f],
-                L[f], R[f]
-            );
-        }
-
-        forAll(kinds, patchi)
-        {
-            if (kinds[patchi] == blastFaceAddressing::SKIP) continue;
-            const fvPatchField<Type>& pf = phi.boundaryField()[patchi];
-            const label start = patchStart[patchi];
-            if (kinds[patchi] == blastFaceAddressing::COUPLED)
-            {
-                const tmp<Field<Type>> tnbr = pf.patchNeighbourField();
-                const Field<Type>& nbr = tnbr();
-                const tmp<Field<GradType>> tgnbr =
-                    grad.boundaryField()[patchi].patchNeighbourField();
-                const Field<GradType>& gnbr = tgnbr();
-                tmp<scalarField> tlonbr;
-                if (anyLowOrder)
-                {
-                    tlonbr =
-                        lowOrder.boundaryField()[patchi].patchNeighbourField();
-                }
-                forAll(pf, j)
-                {
-                    const label cf = start + j;
-                    const label P = own[cf];
-                    if (anyLowOrder && (lo[P] > 0 || tlonbr()[j] > 0))
-                    {
-                        L[cf] = vf[P];
-                        R[cf] = nbr[j];
-                        continue;
-                    }
-                    blastLimiters::limitedPair<Limiter>
-                    (
-                        vf[P], nbr[j], delta[cf] & g[P], delta[cf] & gnbr[j],
-                        w[cf], L[cf], R[cf]
-                    );
-                }
-            }
-            else
-            {
-                forAll(pf, j)
-                {
-                    const label cf = start + j;
-                    L[cf] = vf[own[cf]];
-                    R[cf] = pf[j];
-                }
-            }
-        }
-    }
-
-    struct firstOrder
-    {
-        static inline scalar psi(const scalar) { return 0; }
-    };
-}
-}
-
-
-template<class Limiter>
-void Foam::blastFluidSolver::reconstruct()
-{
-#define RECONSTRUCT(phi, grad, L, R)                                           \
-    reconstructField<Limiter>                                                  \
-    (                                                                          \
-        phi, grad, addr_.nInternal(), addr_.own(), addr_.nei(), addr_.w(), addr_.delta(), addr_.patchStart(),            \
-        addr_.kinds(), lowOrder_, anyLowOrder, L, R                               \
-    )
-    const bool anyLowOrder = anyLowOrder_;
-
-    if (twoPhase_)
-    {
-        RECONSTRUCT(alpha1Ptr_(), gradAlpha_(), faces_.alphaL, faces_.alphaR);
-        RECONSTRUCT(rho1Ptr_(), gradRho1_(), rho1L_, rho1R_);
-        RECONSTRUCT(rho2Ptr_(), gradRho2_(), rho2L_, rho2R_);
-    }
-    else
-    {
-        RECONSTRUCT(rho_, gradRho_(), faces_.rhoL, faces_.rhoR);
-    }
-    RECONSTRUCT(U_, gradU_(), faces_.UL, faces_.UR);
-    RECONSTRUCT(p_, gradP_(), faces_.pL, faces_.pR);
-
-#undef RECONSTRUCT
-}
-
-
 void Foam::blastFluidSolver::faceStates()
 {
-    if (limiter_ == NONE)
+    // One call of the limiter per field: its face loop is a template
+    // instantiated with its inline psi
+    const blastLimiter& limiter = limiter_();
+    if (limiter.secondOrder())
     {
-        reconstruct<firstOrder>();
-        return;
+        if (twoPhase_)
+        {
+            gaussGrad(alpha1Ptr_(), gradAlpha_());
+            gaussGrad(rho1Ptr_(), gradRho1_());
+            gaussGrad(rho2Ptr_(), gradRho2_());
+        }
+        else
+        {
+            gaussGrad(rho_, gradRho_());
+        }
+        gaussGrad(U_, gradU_());
+        gaussGrad(p_, gradP_());
     }
 
+    const bool lo = anyLowOrder_;
     if (twoPhase_)
     {
-        gaussGrad(alpha1Ptr_(), gradAlpha_());
-        gaussGrad(rho1Ptr_(), gradRho1_());
-        gaussGrad(rho2Ptr_(), gradRho2_());
+        limiter.faceValues
+        (
+            addr_, alpha1Ptr_(), gradAlpha_(), lowOrder_, lo,
+            faces_.alphaL, faces_.alphaR
+        );
+        limiter.faceValues
+        (
+            addr_, rho1Ptr_(), gradRho1_(), lowOrder_, lo, rho1L_, rho1R_
+        );
+        limiter.faceValues
+        (
+            addr_, rho2Ptr_(), gradRho2_(), lowOrder_, lo, rho2L_, rho2R_
+        );
     }
     else
     {
-        gaussGrad(rho_, gradRho_());
+        limiter.faceValues
+        (
+            addr_, rho_, gradRho_(), lowOrder_, lo, faces_.rhoL, faces_.rhoR
+        );
     }
-    gaussGrad(U_, gradU_());
-    gaussGrad(p_, gradP_());
-
-    switch (limiter_)
-    {
-        case MINMOD: reconstruct<blastLimiters::minmod>(); break;
-        case VANLEER: reconstruct<blastLimiters::vanLeer>(); break;
-        case VANALBADA: reconstruct<blastLimiters::vanAlbada>(); break;
-        case MCLIM: reconstruct<blastLimiters::MC>(); break;
-        case SUPERBEE: reconstruct<blastLimiters::superbee>(); break;
-        default: reconstruct<firstOrder>(); break;
-    }
+    limiter.faceValues
+    (
+        addr_, U_, gradU_(), lowOrder_, lo, faces_.UL, faces_.UR
+    );
+    limiter.faceValues
+    (
+        addr_, p_, gradP_(), lowOrder_, lo, faces_.pL, faces_.pR
+    );
 }
 
 
@@ -1182,7 +1064,6 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     mixture_(thermoDict_),
     twoPhase_(mixture_.twoPhase()),
     flux_(fluxScheme::New(fluidDict_)),
-    limiter_(VANLEER),
     RKorder_(2),
     QActive_(false),
     CQ_(1.5),
@@ -1646,7 +1527,7 @@ void Foam::blastFluidSolver::report(Ostream& os) const
     os  << "blastFluidSolver: " << mixture_.size() << " material(s) "
         << mixture_.materials() << nl
         << "    flux " << fluidDict_.getOrDefault<word>("flux", "HLLC")
-        << ", limiter " << limiterNames[limiter_]
+        << ", limiter " << limiter_->type()
         << ", SSP RK" << RKorder_
         << ", Q-scheme " << (QActive_ ? "on" : "off");
     if (QActive_)

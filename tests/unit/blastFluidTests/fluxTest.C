@@ -1,7 +1,6 @@
-// Unit tests of the numerical fluxes and limiters (libblastFluid)
+// Unit tests of the numerical fluxes (libblastFluid; limiters: limiterTest.C)
 #include <gtest/gtest.h>
 #include "fluxScheme.H"
-#include "blastLimiters.H"
 #include "IStringStream.H"
 
 using namespace Foam;
@@ -105,26 +104,3 @@ TEST(FluxSchemes, UnknownNameRejected)
     EXPECT_THROW(fluxScheme::New(dictionary(is)), Foam::error);
 }
 
-
-TEST(Limiters, TVDRegionAndSymmetry)
-{
-    for (scalar r : {-1.0, 0.0, 0.3, 1.0, 2.0, 10.0})
-    {
-        const scalar v[] =
-        {
-            blastLimiters::minmod::psi(r), blastLimiters::vanLeer::psi(r),
-            blastLimiters::vanAlbada::psi(r), blastLimiters::MC::psi(r)
-        };
-        for (scalar psi : v)
-        {
-            EXPECT_GE(psi, 0);
-            EXPECT_LE(psi, 2*max(r, scalar(0)) + 1e-14);
-            EXPECT_LE(psi, 2 + 1e-14);
-            if (r == 1.0) EXPECT_NEAR(psi, 1, 1e-14);
-        }
-    }
-    // Monotone data stay within the neighbours
-    scalar L, R;
-    blastLimiters::limitedPair<blastLimiters::MC>(1, 2, 5, 5, 0.5, L, R);
-    EXPECT_GE(L, 1); EXPECT_LE(L, 2); EXPECT_GE(R, 1); EXPECT_LE(R, 2);
-}
