@@ -205,13 +205,9 @@ void Foam::blastFluidSolver::readControls()
     // naming the file, the entry and the valid names
     limiter_ = blastLimiter::New(fluidDict_);
 
-    RKorder_ = fluidDict_.getOrDefault<label>("RKorder", 2);
-    if (RKorder_ < 1 || RKorder_ > 3)
-    {
-        FatalIOErrorInFunction(fluidDict_)
-            << "Entry 'RKorder' must be 1, 2 or 3, got " << RKorder_
-            << exit(FatalIOError);
-    }
+    // Entry 'RKorder' (1, 2, 3); another value: FatalIOError naming the
+    // file and the entry
+    rk_.reset(new blastTimeIntegrator(fluidDict_));
 
     checkKnownEntries
     (
@@ -944,9 +940,9 @@ void Foam::blastFluidSolver::assembleResidual()
 }
 
 
-void Foam::blastFluidSolver::addOutflow(const scalar a, const scalar dt)
+void Foam::blastFluidSolver::addOutflow(const label s, const scalar dt)
 {
-    // Like the state: O <- a O0 + (1 - a)(O + dt F), O0 = 0 at the step's
+    // Like the state: O <- a_s O0 + b_s (O + dt F), O0 = 0 at the step's
     // start, so that the step's outflow is the combination of the stages'
     // fluxes the state received (a retried step starts it again)
     scalar fm = 0, fE = 0;
@@ -957,12 +953,8 @@ void Foam::blastFluidSolver::addOutflow(const scalar a, const scalar dt)
         fm += F_.rho[cf];
         fE += F_.rhoE[cf];
     }
-    if (a == 0)
-    {
-        stepOutMass_ = stepOutEnergy_ = 0;
-    }
-    stepOutMass_ = (1 - a)*(stepOutMass_ + dt*fm);
-    stepOutEnergy_ = (1 - a)*(stepOutEnergy_ + dt*fE);
+    rk_->accumulate(s, stepOutMass_, dt*fm);
+    rk_->accumulate(s, stepOutEnergy_, dt*fE);
 }
 
 
@@ -995,38 +987,32 @@ bool Foam::blastFluidSolver::stageFluxes()
 }
 
 
-bool Foam::blastFluidSolver::stage(const scalar a, const scalar dt)
+bool Foam::blastFluidSolver::stage(const label s, const scalar dt)
 {
     if (!stageFluxes())
     {
         return false;
     }
     assembleResidual();
-    addOutflow(a, dt);
+    addOutflow(s, dt);
 
-    const scalar b = 1 - a;
-    scalarField& rho = rho_.primitiveFieldRef();
-    vectorField& rhoU = rhoU_.primitiveFieldRef();
-    scalarField& rhoE = rhoE_.primitiveFieldRef();
-    forAll(rho, i)
-    {
-        rho[i] = a*start_.rho[i] + b*(rho[i] + dt*residual_.rho[i]);
-        rhoU[i] = a*start_.rhoU[i] + b*(rhoU[i] + dt*residual_.rhoU[i]);
-        rhoE[i] = a*start_.rhoE[i] + b*(rhoE[i] + dt*residual_.rhoE[i]);
-    }
+    const blastTimeIntegrator& rk = rk_();
+    rk.combine(s, dt, start_.rho, rho_.primitiveFieldRef(), residual_.rho);
+    rk.combine(s, dt, start_.rhoU, rhoU_.primitiveFieldRef(), residual_.rhoU);
+    rk.combine(s, dt, start_.rhoE, rhoE_.primitiveFieldRef(), residual_.rhoE);
     if (twoPhase_)
     {
         scalarField& alpha = alpha1Ptr_->primitiveFieldRef();
-        scalarField& ar1 = alphaRho1Ptr_->primitiveFieldRef();
+        rk.combine(s, dt, start_.alpha, alpha, residual_.alpha);
         forAll(alpha, i)
         {
-            alpha[i] = min
-            (
-                max(a*start_.alpha[i] + b*(alpha[i] + dt*residual_.alpha[i]), scalar(0)),
-                scalar(1)
-            );
-            ar1[i] = a*start_.alphaRho1[i] + b*(ar1[i] + dt*residual_.alphaRho1[i]);
+            alpha[i] = min(max(alpha[i], scalar(0)), scalar(1));
         }
+        rk.combine
+        (
+            s, dt, start_.alphaRho1, alphaRho1Ptr_->primitiveFieldRef(),
+            residual_.alphaRho1
+        );
     }
     primitivesCurrent_ = false;
     return true;
@@ -1064,7 +1050,6 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     mixture_(thermoDict_),
     twoPhase_(mixture_.twoPhase()),
     flux_(fluxScheme::New(fluidDict_)),
-    RKorder_(2),
     QActive_(false),
     CQ_(1.5),
     CL_(0.06),
@@ -1402,16 +1387,6 @@ void Foam::blastFluidSolver::prepareRetry
 }
 
 
-const Foam::scalar* Foam::blastFluidSolver::rkWeights() const
-{
-    // SSP Runge-Kutta (Shu & Osher): stage weights of the old state
-    static const scalar a1[] = {0};
-    static const scalar a2[] = {0, 0.5};
-    static const scalar a3[] = {0, 0.75, 1.0/3.0};
-    return RKorder_ == 1 ? a1 : RKorder_ == 2 ? a2 : a3;
-}
-
-
 void Foam::blastFluidSolver::advance(const scalar dt)
 {
     if (burn_.valid())
@@ -1435,18 +1410,15 @@ void Foam::blastFluidSolver::advance(const scalar dt)
         start_.alphaRho1 = alphaRho1Ptr_->primitiveField();
     }
 
-    // SSP Runge-Kutta (Shu & Osher): stage weights of the old state
-    const scalar* a = rkWeights();
-
     lowOrder_.primitiveFieldRef() = 0;
     anyLowOrder_ = false;
     const label maxAttempts = 4;
     for (label attempt = 0; attempt < maxAttempts; ++attempt)
     {
         bool ok = true;
-        for (label s = 0; s < RKorder_ && ok; ++s)
+        for (label s = 0; s < rk_->nStages() && ok; ++s)
         {
-            ok = stage(a[s], dt);
+            ok = stage(s, dt);
         }
         if (ok && primitivesFromConservative(false))
         {
@@ -1528,7 +1500,7 @@ void Foam::blastFluidSolver::report(Ostream& os) const
         << mixture_.materials() << nl
         << "    flux " << fluidDict_.getOrDefault<word>("flux", "HLLC")
         << ", limiter " << limiter_->type()
-        << ", SSP RK" << RKorder_
+        << ", SSP RK" << rk_->order()
         << ", Q-scheme " << (QActive_ ? "on" : "off");
     if (QActive_)
     {

@@ -19,7 +19,7 @@ Description
 
     The gas content C_i = phi_i V_i U_i (U = rho, rho u, rho E, and with
     two materials alpha rho_1, alpha) advances by SSP Runge-Kutta stages
-        C^(s+1) = a_s C^n + (1 - a_s)(C^(s) + dt R(U^(s)))
+        C^(s+1) = a_s C^n + b_s (C^(s) + dt R(U^(s)))
         R_i = -sum_f a_f F_f(U^(s)) + wall terms,
     wall terms (moving wall, no mass through it):
         momentum  -p_i W_i,  energy  -p_i dV_i/dt,  alpha  alpha_i dV_i/dt
@@ -685,16 +685,16 @@ void Foam::blastFluidSolver::fillEmptyCells()
 }
 
 
-void Foam::blastFluidSolver::addWallTerms(const scalar a, const scalar dt)
+void Foam::blastFluidSolver::addWallTerms(const label s, const scalar dt)
 {
-    const scalar b = 1 - a;
+    const scalar a = rk_->a(s), b = rk_->b(s);
     scaleFluxes(aperture_);
     assembleResidual();
-    addOutflow(a, dt);
+    addOutflow(s, dt);
 
     // Moving walls: no mass through them, the pressure pushes the gas and
     // does the work p dV; the impulse and work enter the Runge-Kutta
-    // combination like the state, I <- (1 - a)(I + dt S).
+    // combination like the state, I <- b_s (I + dt S) (rk_'s weights).
     // A wall that recedes faster than the gas can follow (a cell opening
     // in the step, a crack widening) cannot take more work than the gas
     // there has: the wall pressure is limited so that the stage leaves the
@@ -786,7 +786,6 @@ void Foam::blastFluidSolver::mergeBadCells
 bool Foam::blastFluidSolver::cutCellStage
 (
     const label s,
-    const scalar a,
     const scalar dt
 )
 {
@@ -805,24 +804,16 @@ bool Foam::blastFluidSolver::cutCellStage
     scalarField& cAlpha = cut_.alpha;
     scalarField& cAlphaRho1 = cut_.alphaRho1;
     contentFromState(phiNow, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
-    addWallTerms(a, dt);
+    addWallTerms(s, dt);
 
-    const scalar b = 1 - a;
-    const label n = mesh_.nCells();
-    for (label i = 0; i < n; ++i)
-    {
-        cRho[i] = a*cutStart_.rho[i] + b*(cRho[i] + dt*residual_.rho[i]);
-        cRhoU[i] = a*cutStart_.rhoU[i] + b*(cRhoU[i] + dt*residual_.rhoU[i]);
-        cRhoE[i] = a*cutStart_.rhoE[i] + b*(cRhoE[i] + dt*residual_.rhoE[i]);
-    }
+    const blastTimeIntegrator& rk = rk_();
+    rk.combine(s, dt, cutStart_.rho, cRho, residual_.rho);
+    rk.combine(s, dt, cutStart_.rhoU, cRhoU, residual_.rhoU);
+    rk.combine(s, dt, cutStart_.rhoE, cRhoE, residual_.rhoE);
     if (twoPhase_)
     {
-        for (label i = 0; i < n; ++i)
-        {
-            cAlpha[i] = a*cutStart_.alpha[i] + b*(cAlpha[i] + dt*residual_.alpha[i]);
-            cAlphaRho1[i] =
-                a*cutStart_.alphaRho1[i] + b*(cAlphaRho1[i] + dt*residual_.alphaRho1[i]);
-        }
+        rk.combine(s, dt, cutStart_.alpha, cAlpha, residual_.alpha);
+        rk.combine(s, dt, cutStart_.alphaRho1, cAlphaRho1, residual_.alphaRho1);
     }
 
     redistribute
@@ -840,8 +831,6 @@ bool Foam::blastFluidSolver::cutCellStage
 
 void Foam::blastFluidSolver::advanceCutCells(const scalar dt)
 {
-    const scalar* a = rkWeights();
-
     fillEmptyCells();
     if (!primitivesCurrent_)
     {
@@ -868,9 +857,9 @@ void Foam::blastFluidSolver::advanceCutCells(const scalar dt)
         wallWork_ = 0;
         wallPressureImpulse_ = 0;
         bool ok = true;
-        for (label s = 0; s < RKorder_ && ok; ++s)
+        for (label s = 0; s < rk_->nStages() && ok; ++s)
         {
-            ok = cutCellStage(s, a[s], dt);
+            ok = cutCellStage(s, dt);
         }
         if (ok && primitivesFromConservative(false))
         {

@@ -18,18 +18,12 @@ Foam::ductNetwork::ductNetwork
 :
     mixture_(mixture),
     flux_(fluxScheme::New(dict)),
-    RKorder_(dict.getOrDefault<label>("RKorder", 2)),
+    rk_(dict),
     frictionFactor_(dict.getOrDefault<scalar>("frictionFactor", 0)),
     dt_(0),
     one_(1), one1_(1), one2_(1), oneRho_(1), oneP_(1), oneE_(1), oneC2_(1),
     wallWork_(0)
 {
-    if (RKorder_ < 1 || RKorder_ > 3)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'RKorder' must be 1, 2 or 3, got " << RKorder_
-            << exit(FatalIOError);
-    }
     if (!(frictionFactor_ >= 0) || !std::isfinite(frictionFactor_))
     {
         FatalIOErrorInFunction(dict)
@@ -484,20 +478,12 @@ void Foam::ductNetwork::advance(const scalar dt)
     wallWorkOf_ = 0;
     pMean_ = 0;
 
-    // SSP Runge-Kutta (Shu & Osher): the old state's weight per stage, and
-    // the weight of each stage's residual in the step's result
-    static const scalar a1[] = {0};
-    static const scalar a2[] = {0, 0.5};
-    static const scalar a3[] = {0, 0.75, 1.0/3.0};
-    const scalar* a = RKorder_ == 1 ? a1 : RKorder_ == 2 ? a2 : a3;
-    for (label s = 0; s < RKorder_; ++s)
+    // SSP Runge-Kutta (Shu & Osher, blastTimeIntegrator): the old state's
+    // weight per stage, and the weight of each stage's residual in the
+    // step's result
+    for (label s = 0; s < rk_.nStages(); ++s)
     {
-        scalar b = 1 - a[s];
-        for (label k = s + 1; k < RKorder_; ++k)
-        {
-            b *= 1 - a[k];
-        }
-        stage(a[s], b, dt);
+        stage(rk_.a(s), rk_.resultWeight(s), dt);
     }
     label bad = -1;
     if (!primitives(bad))
