@@ -1,4 +1,5 @@
 #!/bin/bash
+# testCores: 2   (tests/run.py: runs only with 2 cores free: 2 MPI ranks or 2 solvers at once)
 # Regression (coupled gas + solid, cut cells): a free rock disc thrown at
 # (20, 5) m/s through air at rest in a periodic box (80 x 80 cells, 1000
 # fluid steps).

@@ -1,4 +1,5 @@
 #!/bin/bash
+# testCores: 2   (tests/run.py: runs only with 2 cores free: 2 MPI ranks or 2 solvers at once)
 # Regression (coupled): gas in cracks narrower than a cell (crackGas, issue
 # 14). The crackVenting plate (1 MPa driver gas against 0.1 MPa air, the plate
 # breaks at 46 us) with `crackGas { }`: the broken joints the gas view has not

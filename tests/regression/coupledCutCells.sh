@@ -1,4 +1,5 @@
 #!/bin/bash
+# testCores: 2   (tests/run.py: runs only with 2 cores free: 2 MPI ranks or 2 solvers at once)
 # Regression (coupled, cut cells: immersedBodyProperties method cutCell):
 # exact moving-boundary finite volumes on the periodic box with a free rock
 # disc (80 x 80 cells, the disc's polygon crosses cell faces everywhere).

@@ -1,4 +1,5 @@
 #!/bin/bash
+# testCores: 2   (tests/run.py: runs only with 2 cores free: 2 MPI ranks or 2 solvers at once)
 # Regression: programmed burn with a delayed initiation, a second explosive,
 # the plan-view burn, restarts and bad setChargeDict input.
 #  1. PETN, primer at the closed wall, initiationTime 4 us (1D, 600 cells):

@@ -1,4 +1,5 @@
 #!/bin/bash
+# testCores: 2   (tests/run.py: runs only with 2 cores free: 2 MPI ranks or 2 solvers at once)
 # decomposePar with method metis uses the project's real libmetisDecomp (Debian's
 # is a stub that aborts): a 2D 60x40 mesh split in 3 must balance the cells to
 # 2 % and cut at most 30 % more faces than the ideal straight cuts of 'simple'.

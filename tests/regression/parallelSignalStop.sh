@@ -1,4 +1,5 @@
 #!/bin/bash
+# testCores: 2   (tests/run.py: runs only with 2 cores free: 2 MPI ranks or 2 solvers at once)
 # Exit status of mpirun after a signal-triggered clean stop (issue 17,
 # item 3), coupled box (20x20 cells, 38 triangles) on 2 ranks, each way of
 # stopping sent after 30 logged steps of a run far longer:

@@ -1,4 +1,5 @@
 #!/bin/bash
+# testCores: 2   (tests/run.py: runs only with 2 cores free: 2 MPI ranks or 2 solvers at once)
 # Restart equality with the tutorials' own write settings (issue 17, item 3):
 # writeControl adjustableRunTime (+ adjustTimeStep for jwlIbFoam). A run
 # stopped by a signal at some step (SIGTERM/SIGINT serial; SIGTERM and

@@ -1,4 +1,5 @@
 #!/bin/bash
+# testCores: 2   (tests/run.py: runs only with 2 cores free: 2 MPI ranks or 2 solvers at once)
 # Regression: tutorials/jwlIbFoam/benchBlast -quick (0.2 ms of the bench
 # blast with the crack gas, and the lined hole in lined/ at the same time):
 # issue 14's acceptance (gas + solid energy within 2 %; the lined versus

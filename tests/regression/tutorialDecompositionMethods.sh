@@ -1,4 +1,5 @@
 #!/bin/bash
+# testCores: 2   (tests/run.py: runs only with 2 cores free: 2 MPI ranks or 2 solvers at once)
 # The tutorials' -np N -method NAME options (tutorials/jwlIbFoam/common/
 # parallelFunctions), on a copy of benchBlast: a wrong -np, an unknown method
 # and -method without -np are refused before any mesh is made, with the
