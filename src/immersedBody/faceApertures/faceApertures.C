@@ -340,7 +340,8 @@ Foam::faceApertures::faceApertures
     nPairs_(0),
     onLeft_(start.size(), 0),
     onRight_(start.size(), 0),
-    lastTriangle_(start.size(), -1)
+    lastTriangle_(start.size(), -1),
+    faceState_(nullptr)
 {
     forAll(length_, f)
     {
@@ -525,6 +526,56 @@ void Foam::faceApertures::update
 }
 
 
+void Foam::faceApertures::update
+(
+    const UList<vector2D>& points0,
+    const UList<vector2D>& points1,
+    const UList<FixedList<label, 3>>& triangles,
+    const UList<edge>& boundaryEdges,
+    const labelUList& faceState
+)
+{
+    if (faceState.size() != length_.size())
+    {
+        FatalErrorInFunction
+            << "faceApertures: " << faceState.size() << " face states for "
+            << length_.size() << " faces" << abort(FatalError);
+    }
+    faceState_ = &faceState;
+    update(points0, points1, triangles, boundaryEdges);
+    faceState_ = nullptr;
+}
+
+
+void Foam::faceApertures::faceStatesFromCells
+(
+    const labelUList& owner,
+    const labelUList& neighbour,
+    const UList<bool>& boundaryCell,
+    const scalarField& alpha,
+    labelList& faceState
+)
+{
+    // A cell decided by its centroid has alpha exactly 0 or 1; anything
+    // else (a clipped cell) tells nothing
+    auto stateOf = [&](const label c) -> label
+    {
+        if (c < 0 || boundaryCell[c]) return -1;
+        return alpha[c] == 1 ? 1 : alpha[c] == 0 ? 0 : -1;
+    };
+    faceState.setSize(owner.size());
+    forAll(owner, f)
+    {
+        label s = stateOf(owner[f]);
+        if (s < 0 && f < neighbour.size())
+        {
+            s = stateOf(neighbour[f]);
+        }
+        faceState[f] = s;
+    }
+}
+
+
 void Foam::faceApertures::clipFace
 (
     const label f,
@@ -581,6 +632,33 @@ void Foam::faceApertures::integrate
     onRight_ = 0;
     lastTriangle_ = -1;
 
+    // The faces the outline does not reach and whose state is known take
+    // it (exactly what the midpoint test gives them); the midpoints of the
+    // others are tested, in the bins that hold one
+    const labelUList* state = faceState_;
+    unknownBin_.setSize(midpointIndex_.nBins());
+    unknownBin_ = !state;
+    if (state)
+    {
+        forAll(covered_, f)
+        {
+            if (boundaryFace_[f] || !(length_[f] > 0)) continue;
+            const label s = (*state)[f];
+            if (s >= 0)
+            {
+                covered_[f] = s == 1 ? length_[f] : 0;
+            }
+            else
+            {
+                midpointIndex_.forEachBin
+                (
+                    midpoint_[f], midpoint_[f],
+                    [&](const label b) { unknownBin_[b] = true; }
+                );
+            }
+        }
+    }
+
     forAll(triangles, t)
     {
         const FixedList<label, 3>& tri = triangles[t];
@@ -616,6 +694,10 @@ void Foam::faceApertures::integrate
         // is in one bin of the midpoint index: visited once per triangle)
         const vector2D lo0(min(x0[0], min(x0[1], x0[2])));
         const vector2D hi0(max(x0[0], max(x0[1], x0[2])));
+        if (!midpointIndex_.touchesFlagged(lo0, hi0, unknownBin_))
+        {
+            continue;
+        }
         midpointIndex_.forEachCandidate
         (
             lo0, hi0,
@@ -623,7 +705,8 @@ void Foam::faceApertures::integrate
             {
                 if
                 (
-                    !boundaryFace_[f] && covered_[f] < length_[f]
+                    !boundaryFace_[f] && (!state || (*state)[f] < 0)
+                 && covered_[f] < length_[f]
                  && inside(midpoint_[f], x0)
                 )
                 {

@@ -236,6 +236,11 @@ void Foam::immersedBodyCoupling::startStep
     );
     copyToFields();
     solidAreaStart_ = alphaWork_*projection_.cellArea();
+    faceApertures::faceStatesFromCells
+    (
+        mesh_.faceOwner(), mesh_.faceNeighbour(), boundaryCell_, alphaWork_,
+        faceState_
+    );
 
     const label nStartPieces = pieceCell_.size();
     addWallPieces(view, xEnd_, 0.5);
@@ -259,7 +264,7 @@ void Foam::immersedBodyCoupling::startStep
     // Apertures of every face over the linear motion from start to end;
     // the two sides of a processor face (computed with the face reversed)
     // take the same value, so that both see the same flux and neighbours
-    apertures_->update(xStart_, xEnd_, tris, outlineEdges_);
+    apertures_->update(xStart_, xEnd_, tris, outlineEdges_, faceState_);
     scalarField& faceAp = faceApertureWork_;
     faceAp.setSize(mesh_.nFaces());
     forAll(faceAp, f)

@@ -368,12 +368,14 @@ TEST(faceApertures, boundaryOnlyPathsEqualClippingEverywhere)
     // 0.8 cells, on a coarse grid (triangles smaller than cells) and a fine
     // one (cells smaller than triangles)
     scalar worstAlpha = 0, worstCovered = 0;
-    label nFull = 0, nCases = 0, nFold = 0;
+    label nFull = 0, nCases = 0, nFold = 0, nKnown = 0, nFaces = 0;
+    scalar worstKnown = 0;
     Random rnd(11);
     for (const label n : {23, 97})
     {
         const grid g = jitteredGrid(n, n);
         faceApertures apAll(g.start, g.end), apFast(g.start, g.end);
+        faceApertures apKnown(g.start, g.end);
         solidProjection proj(g.cells);
         const holedBlock b = makeHoledBlock
         (
@@ -443,6 +445,28 @@ TEST(faceApertures, boundaryOnlyPathsEqualClippingEverywhere)
             solidOverlaps overlaps;
             proj.project(x0, b.triangles, v, alphaAll, U, overlaps);
             proj.project(x0, b.triangles, v, alphaFast, U, overlaps, &cut);
+
+            // The coupling's path: the faces next to a cell the outline does
+            // not cross take that cell's state, the rest as apFast; the
+            // same values bit for bit (a known face is covered wholly or
+            // not at all, as its midpoint test says)
+            labelList state;
+            faceApertures::faceStatesFromCells
+            (
+                g.owner, g.neighbour, cut, alphaFast, state
+            );
+            apKnown.update(x0, x1, b.triangles, outline, state);
+            forAll(g.start, f)
+            {
+                worstKnown = max
+                (
+                    worstKnown,
+                    mag(apFast.covered()[f] - apKnown.covered()[f])
+                   /apAll.length()[f]
+                );
+                if (state[f] >= 0) ++nKnown;
+            }
+            nFaces += g.start.size();
             forAll(alphaAll, c)
             {
                 worstAlpha = max(worstAlpha, mag(alphaAll[c] - alphaFast[c]));
@@ -460,7 +484,16 @@ TEST(faceApertures, boundaryOnlyPathsEqualClippingEverywhere)
     RecordProperty("invertedTriangles", nFold);
     RecordProperty("maxAlphaDifference", sci(worstAlpha));
     RecordProperty("maxCoveredDifferenceOverLength", sci(worstCovered));
+    RecordProperty
+    (
+        "facesKnownFromTheirCells",
+        std::to_string(nKnown) + " of " + std::to_string(nFaces)
+    );
+    RecordProperty("maxCoveredDifferenceKnownStatesVsOutlinePath", sci(worstKnown));
     EXPECT_GT(nFull, 1000);
+    EXPECT_EQ(worstKnown, 0);
+    // Most faces are known from their cells (else the path is not taken)
+    EXPECT_GT(nKnown, nFaces/2);
     EXPECT_LT(worstAlpha, 1e-12);
     // The full path integrates to a relative 1e-10 of the face length
     EXPECT_LT(worstCovered, 1e-9);
