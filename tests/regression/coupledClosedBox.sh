@@ -12,10 +12,11 @@
 #  - restart: 0 -> 2 ms in one run equals 0 -> 1 ms, stop, restart -> 2 ms
 #    (gas fields and solid state, 1e-12 relative);
 #  - 2 ranks (decomposePar with METIS, reconstructPar) against serial after
-#    50 steps (1e-8); after 500 steps the round-off of the different
-#    summation orders has grown (open, doc/theory-coupling.md): the cell
-#    gas contents within 1e-3 of the largest, as in coupledCutCells; a
-#    2-rank restart against the 2-rank run (1e-12).
+#    50 and 500 steps (gas fields and solid state, 1e-8: the nodal forces
+#    summed in another order differ by round-off, which must stay
+#    round-off; apertures a few ulp above 0 once flipped the small cells'
+#    neighbourhoods, doc/theory-coupling.md "Parallel"); a 2-rank restart
+#    against the 2-rank run (1e-12).
 cd "$JWLIBFOAM_TEST_DIR" || exit 1
 data=$JWLIBFOAM_PROJECT/tests/regression/coupledData
 compare=$data/compareCases.py
@@ -104,15 +105,9 @@ else
     ok=$(/usr/bin/python3 -c "print(int($d <= 1e-8))")
     echo ">> 2 ranks (METIS) vs serial at 0.1 ms (50 steps), reconstructed: max relative difference $d (tolerance 1e-8)$([ $ok = 1 ] || echo '  <-- FAIL')"
     [ $ok = 1 ] || fail=1
-    d=$(PYTHONPATH=$data /usr/bin/python3 - <<'PY'
-import numpy as np, budget
-def content(t, f):
-    return budget.internal(f"{t}/{f}") * budget.internal(f"{t}/fluidFraction")
-print(f'{max(np.abs(content("serial/0.001", f) - content("parallel/0.001", f)).max() / np.abs(content("serial/0.001", f)).max() for f in ("rho", "rhoE")):.3e}')
-PY
-)
-    ok=$(/usr/bin/python3 -c "print(int($d <= 1e-3))")
-    echo ">> 2 ranks (METIS) vs serial at 1 ms (500 steps): max difference of the cell gas contents (mass, energy) / largest $d (tolerance 1e-3)$([ $ok = 1 ] || echo '  <-- FAIL')"
+    d=$(/usr/bin/python3 $compare serial/0.001 parallel/0.001 | tail -1 | awk '{print $2}')
+    ok=$(/usr/bin/python3 -c "print(int($d <= 1e-8))")
+    echo ">> 2 ranks (METIS) vs serial at 1 ms (500 steps), reconstructed: max relative difference $d (tolerance 1e-8)$([ $ok = 1 ] || echo '  <-- FAIL')"
     [ $ok = 1 ] || fail=1
 fi
 
