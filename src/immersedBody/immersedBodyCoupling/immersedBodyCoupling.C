@@ -457,27 +457,29 @@ void Foam::immersedBodyCoupling::forEachWallForce(const Visitor& visit) const
     }
     // Cells with a wall force but no piece (the wall is in them only in
     // part of the step): over the solid in them (vertex k of triangle t
-    // of the view is discontinuous node 3t + k)
+    // of the view is discontinuous node 3t + k). The cells the solid
+    // covers with no gas (most overlaps) have no wall force: skipped
+    // before their weights are computed
+    auto forceWithoutPiece = [&](const label c)
+    {
+        return pieceLength_[c] <= 0 && wallForce_[c] != vector2D::zero;
+    };
     solidProjection::forEachPointWeight
     (
         overlapsStart_, solidAreaStart_, xStart_, *viewTriangles_,
+        forceWithoutPiece,
         [&](const label c, const label t, const label k, const scalar w)
         {
-            if (pieceLength_[c] <= 0)
-            {
-                visit(c, 3*t + k, (w*shareStart_[c])*wallForce_[c]);
-            }
+            visit(c, 3*t + k, (w*shareStart_[c])*wallForce_[c]);
         }
     );
     solidProjection::forEachPointWeight
     (
         overlapsEnd_, solidAreaEnd_, xEnd_, *viewTriangles_,
+        forceWithoutPiece,
         [&](const label c, const label t, const label k, const scalar w)
         {
-            if (pieceLength_[c] <= 0)
-            {
-                visit(c, 3*t + k, (w*(1 - shareStart_[c]))*wallForce_[c]);
-            }
+            visit(c, 3*t + k, (w*(1 - shareStart_[c]))*wallForce_[c]);
         }
     );
 }
