@@ -249,13 +249,25 @@ void Foam::immersedBodyCoupling::startStep
         faceState_
     );
 
+    cellStateStart_.setSize(mesh_.nCells());
+    forAll(cellStateStart_, c)
+    {
+        const scalar a = alphaWork_[c];
+        cellStateStart_[c] =
+            boundaryCell_[c] ? -1 : a == 1 ? 1 : a == 0 ? 0 : -1;
+    }
+
+    // Apertures of every face over the linear motion from start to end
+    apertures_->update(xStart_, xEnd_, tris, outlineEdges_, faceState_);
+
     const label nStartPieces = pieceCell_.size();
     addWallPieces(view, xEnd_, 0.5);
     markBoundaryCells(nStartPieces, xEnd_);
+    setCellStateEnd();
     projection_.project
     (
         xEnd_, tris, vPoint_, alphaEnd_, work2D_, overlapsEnd_,
-        &boundaryCell_
+        &boundaryCell_, &cellStateEnd_
     );
     solidAreaEnd_ = alphaEnd_*projection_.cellArea();
 
@@ -268,10 +280,9 @@ void Foam::immersedBodyCoupling::startStep
         shareStart_[i] = s && e ? 0.5 : s ? 1 : 0;
     }
 
-    // Apertures of every face over the linear motion from start to end;
-    // the two sides of a processor face (computed with the face reversed)
-    // take the same value, so that both see the same flux and neighbours
-    apertures_->update(xStart_, xEnd_, tris, outlineEdges_, faceState_);
+    // The two sides of a processor face (computed with the face reversed)
+    // take the same aperture, so that both see the same flux and
+    // neighbours
     scalarField& faceAp = faceApertureWork_;
     faceAp.setSize(mesh_.nFaces());
     // What is left of a covered face by round-off (the covered pieces of
@@ -375,6 +386,37 @@ void Foam::immersedBodyCoupling::setOutlineEdges(const continuousView& view)
         }
     }
     outlineEdges_.append(foldEdges_);
+}
+
+
+void Foam::immersedBodyCoupling::setCellStateEnd()
+{
+    // A cell the outline crosses neither at the start nor at the end is
+    // all solid or all gas at both; a face of it that no outline edge
+    // reaches in the step (faceApertures::boundaryFace) is covered all the
+    // step or open all the step and lies in the cell's closure at both
+    // ends: the cell's state at the end is its state at the start. (Faces
+    // of length 0, on empty patches, tell nothing)
+    const boolList& reached = apertures_->boundaryFace();
+    const scalarField& length = apertures_->length();
+    const cellList& cells = mesh_.cells();
+    cellStateEnd_.setSize(mesh_.nCells());
+    forAll(cellStateEnd_, c)
+    {
+        label s = -1;
+        if (!boundaryCell_[c] && cellStateStart_[c] >= 0)
+        {
+            for (const label f : cells[c])
+            {
+                if (!reached[f] && length[f] > 0)
+                {
+                    s = cellStateStart_[c];
+                    break;
+                }
+            }
+        }
+        cellStateEnd_[c] = s;
+    }
 }
 
 

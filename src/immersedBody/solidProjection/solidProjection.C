@@ -232,7 +232,8 @@ void Foam::solidProjection::project
     scalarField& alphaSolid,
     List<vector2D>& Usolid,
     solidOverlaps& overlaps,
-    const UList<bool>* boundaryCell
+    const UList<bool>* boundaryCell,
+    const labelUList* cellState
 )
 {
     alphaSolid.setSize(nCells());
@@ -241,6 +242,32 @@ void Foam::solidProjection::project
     Usolid = Zero;
     overlaps.clear();
     lastTriangle_ = -1;
+
+    // The cells known without a triangle: the covered ones take their
+    // whole area now (so the centroid tests below pass them by); the
+    // centroid index's bins with a cell still to decide are flagged
+    const bool known = boundaryCell && cellState;
+    if (known)
+    {
+        unknownBin_.setSize(centroidIndex_->nBins());
+        unknownBin_ = false;
+        forAll(alphaSolid, celli)
+        {
+            const label s = (*cellState)[celli];
+            if (s == 1)
+            {
+                alphaSolid[celli] = cellArea_[celli];
+            }
+            else if (s < 0 && !(*boundaryCell)[celli])
+            {
+                centroidIndex_->forEachBin
+                (
+                    cellCentroid_[celli], cellCentroid_[celli],
+                    [&](const label b) { unknownBin_[b] = true; }
+                );
+            }
+        }
+    }
 
     // The bins that the boundary cells' boxes touch: a triangle whose box
     // touches none of them overlaps no boundary cell
@@ -301,7 +328,11 @@ void Foam::solidProjection::project
         // negative clipped area does above. Each cell is in one bin of the
         // centroid index: visited once per triangle
         const scalar twiceArea = polygonClipping::cross(a, b, c);
-        if (!boundaryCell || twiceArea <= 0)
+        if
+        (
+            !boundaryCell || twiceArea <= 0
+         || (known && !centroidIndex_->touchesFlagged(lo, hi, unknownBin_))
+        )
         {
             continue;
         }
@@ -310,7 +341,14 @@ void Foam::solidProjection::project
             lo, hi,
             [&](const label celli)
             {
-                if ((*boundaryCell)[celli] || alphaSolid[celli] > 0) return;
+                if
+                (
+                    (*boundaryCell)[celli] || alphaSolid[celli] > 0
+                 || (known && (*cellState)[celli] >= 0)
+                )
+                {
+                    return;
+                }
                 const vector2D& x = cellCentroid_[celli];
                 // Without a division first: a centroid clearly outside
                 // (the test below, with a wider margin) is most candidates
