@@ -478,13 +478,14 @@ bool Foam::solidProjection::clipSegment
     const vector2D& a,
     const vector2D& b,
     scalar& s0,
-    scalar& s1
+    scalar& s1,
+    const scalar onLine
 ) const
 {
     return polygonClipping::clipSegment
     (
         a, b, &cellVertices_[cellStart_[celli]],
-        cellStart_[celli + 1] - cellStart_[celli], s0, s1
+        cellStart_[celli + 1] - cellStart_[celli], s0, s1, onLine
     );
 }
 
