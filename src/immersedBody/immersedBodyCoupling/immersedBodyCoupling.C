@@ -10,6 +10,7 @@ License
 #include "fvMesh.H"
 #include "zeroGradientFvPatchFields.H"
 #include "syncTools.H"
+#include <algorithm>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -240,7 +241,7 @@ void Foam::immersedBodyCoupling::startStep
         &boundaryCell_
     );
     copyToFields();
-    solidAreaStart_ = alphaWork_*projection_.cellArea();
+    areaOf(alphaWork_, solidAreaStart_);
     faceApertures::faceStatesFromCells
     (
         mesh_.faceOwner(), mesh_.faceNeighbour(), boundaryCell_, alphaWork_,
@@ -265,7 +266,7 @@ void Foam::immersedBodyCoupling::startStep
         xEnd_, tris, vPoint_, alphaEnd_, work2D_, overlapsEnd_,
         &boundaryCell_, &cellStateEnd_
     );
-    solidAreaEnd_ = alphaEnd_*projection_.cellArea();
+    areaOf(alphaEnd_, solidAreaEnd_);
 
     // A cell's wall force goes half to the solid at the start, half to
     // the solid at the end of the step (all to the one there is)
@@ -385,6 +386,22 @@ void Foam::immersedBodyCoupling::setOutlineEdges(const continuousView& view)
 }
 
 
+void Foam::immersedBodyCoupling::areaOf
+(
+    const scalarField& alpha,
+    scalarField& area
+) const
+{
+    // Into a list sized once (alpha*cellArea would be a new field per step)
+    const scalarField& A = projection_.cellArea();
+    area.setSize(alpha.size());
+    forAll(area, i)
+    {
+        area[i] = alpha[i]*A[i];
+    }
+}
+
+
 void Foam::immersedBodyCoupling::setCellStateEnd()
 {
     // A cell the outline crosses neither at the start nor at the end is
@@ -468,7 +485,7 @@ void Foam::immersedBodyCoupling::addWallPieces(const continuousView& view)
     // outside dropped the edge's pieces from the cell, whose remainder
     // (p_i times the missing area vector) went to its other pieces
     static const scalar onLineTol = 1e-5;
-    DynamicList<scalar> events(16);
+    DynamicList<scalar>& events = events_;
     forAll(edges, e)
     {
         const label i0 = edges[e].start(), i1 = edges[e].end();
@@ -558,7 +575,9 @@ void Foam::immersedBodyCoupling::addWallPieces(const continuousView& view)
                 }
             );
         }
-        Foam::sort(events);
+        // (std::sort: no work buffer per edge, as Foam::sort's stable
+        // sort would take)
+        std::sort(events.begin(), events.end());
 
         // Samples: 2-point Gauss in every interval
         const auto addSample = [&](const scalar ts, const scalar weight)
