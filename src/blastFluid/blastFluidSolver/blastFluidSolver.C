@@ -455,40 +455,7 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
     }
     if (returnReduce(bad >= 0, orOp<bool>()))
     {
-        // Name the first bad cell (of the lowest processor that has one)
-        // in the message every rank prints
-        List<string> where(Pstream::nProcs());
-        if (bad >= 0)
-        {
-            OStringStream os;
-            os.precision(8);
-            os  << "cell " << bad;
-            if (Pstream::parRun())
-            {
-                os  << " of processor " << Pstream::myProcNo();
-            }
-            os  << " (centre " << mesh_.C()[bad] << "): rho = " << rho[bad]
-                << ", p = " << p[bad] << ", U = " << U[bad]
-                << ", rhoE = " << rhoE[bad];
-            where[Pstream::myProcNo()] = os.str();
-        }
-        Pstream::gatherList(where);
-        Pstream::scatterList(where);
-        string first;
-        forAll(where, proci)
-        {
-            if (!where[proci].empty())
-            {
-                first = where[proci];
-                break;
-            }
-        }
-        FatalErrorInFunction
-            << "Negative or non-finite density/pressure: non-physical"
-            << " state at time " << mesh_.time().timeName() << " in "
-            << first.c_str() << nl
-            << "    Stopping without writing this time; the last written"
-            << " time is the last good state." << exit(FatalError);
+        stopOnBadCell(bad);
     }
 
     p_.correctBoundaryConditions();
@@ -506,6 +473,175 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
 
     primitivesCurrent_ = true;
     return true;
+}
+
+
+void Foam::blastFluidSolver::primitivesOfCells(const labelUList& cells)
+{
+    // primitivesFromConservative(true) for these cells only, the same
+    // operations cell by cell (the equation of state on the gathered
+    // cells), so that every primitive is what the whole-mesh call would
+    // give: the caller knows the other cells' primitives are current
+    const label m = cells.size();
+    const scalarField& rho = rho_.primitiveField();
+    const vectorField& rhoU = rhoU_.primitiveField();
+    const scalarField& rhoE = rhoE_.primitiveField();
+    vectorField& U = U_.primitiveFieldRef();
+    scalarField& p = p_.primitiveFieldRef();
+    scalarField& e = e_.primitiveFieldRef();
+    const scalar rhoFloor = 1e-12;
+    const scalar alphaEps = 1e-12;
+
+    // Gathered lists grow only (no allocation once they fit)
+    gatheredStates& g = gathered_;
+    g.fit(m);
+
+    label bad = -1;
+    forAll(cells, k)
+    {
+        const label i = cells[k];
+        const vector& mi = rhoU[i];
+        if
+        (
+            rho[i] > 0 && std::isfinite(rho[i]) && std::isfinite(rhoE[i])
+         && std::isfinite(mi.x()) && std::isfinite(mi.y())
+         && std::isfinite(mi.z())
+        )
+        {
+            U[i] = mi/rho[i];
+            rhoe_[i] = rhoE[i] - 0.5*(mi & U[i]);
+        }
+        else
+        {
+            if (bad < 0) bad = i;
+            U[i] = Zero;
+            rhoe_[i] = 1;
+        }
+        g.rhoe[k] = rhoe_[i];
+    }
+
+    const scalarField* burn = burnCells();
+    if (twoPhase_)
+    {
+        scalarField& alpha = alpha1Ptr_->primitiveFieldRef();
+        const scalarField& ar1 = alphaRho1Ptr_->primitiveField();
+        scalarField& r1 = rho1Ptr_->primitiveFieldRef();
+        scalarField& r2 = rho2Ptr_->primitiveFieldRef();
+        forAll(cells, k)
+        {
+            const label i = cells[k];
+            const scalar a = min(max(alpha[i], scalar(0)), scalar(1));
+            alpha[i] = a;
+            const scalar rhoi = max(rho[i], rhoFloor);
+            const scalar m1 = min(max(ar1[i], scalar(0)), rhoi);
+            r1[i] = max(m1/max(a, alphaEps), rhoFloor);
+            r2[i] = max((rhoi - m1)/max(1 - a, alphaEps), rhoFloor);
+            g.alpha[k] = a;
+            g.r1[k] = r1[i];
+            g.r2[k] = r2[i];
+            g.rho[k] = rho[i];
+            if (burn) g.burn[k] = (*burn)[i];
+        }
+        mixture_.pc2
+        (
+            m, g.alpha, g.r1, g.r2, g.rho, g.rhoe, g.p, g.c2,
+            burn ? &g.burn : nullptr
+        );
+    }
+    else
+    {
+        forAll(cells, k)
+        {
+            const label i = cells[k];
+            rhoSafe_[i] = max(rho[i], rhoFloor);
+            g.rho[k] = rhoSafe_[i];
+        }
+        mixture_.pc2(m, g.rho, g.rho, g.rho, g.rho, g.rhoe, g.p, g.c2);
+    }
+
+    forAll(cells, k)
+    {
+        const label i = cells[k];
+        p[i] = g.p[k];
+        const scalar c2 = g.c2[k];
+        if
+        (
+            !(rho[i] > 0) || !(p[i] > 0) || !(c2 > 0)
+         || !std::isfinite(p[i]) || !std::isfinite(c2)
+         || !std::isfinite(rhoE[i]) || !std::isfinite(magSqr(rhoU[i]))
+        )
+        {
+            if (bad < 0) bad = i;
+            c_[i] = 0;
+        }
+        else
+        {
+            c_[i] = sqrt(c2);
+        }
+        e[i] = rhoe_[i]/max(rho[i], VSMALL);
+    }
+    if (returnReduce(bad >= 0, orOp<bool>()))
+    {
+        stopOnBadCell(bad);
+    }
+
+    p_.correctBoundaryConditions();
+    U_.correctBoundaryConditions();
+    if (twoPhase_)
+    {
+        alpha1Ptr_->correctBoundaryConditions();
+        rho1Ptr_->correctBoundaryConditions();
+        rho2Ptr_->correctBoundaryConditions();
+    }
+    else
+    {
+        rho_.correctBoundaryConditions();
+    }
+    primitivesCurrent_ = true;
+}
+
+
+void Foam::blastFluidSolver::stopOnBadCell(const label bad) const
+{
+    // Name the first bad cell (of the lowest processor that has one) in
+    // the message every rank prints (collective: every rank calls it)
+    const scalarField& rho = rho_.primitiveField();
+    const scalarField& rhoE = rhoE_.primitiveField();
+    const vectorField& U = U_.primitiveField();
+    const scalarField& p = p_.primitiveField();
+
+    List<string> where(Pstream::nProcs());
+    if (bad >= 0)
+    {
+        OStringStream os;
+        os.precision(8);
+        os  << "cell " << bad;
+        if (Pstream::parRun())
+        {
+            os  << " of processor " << Pstream::myProcNo();
+        }
+        os  << " (centre " << mesh_.C()[bad] << "): rho = " << rho[bad]
+            << ", p = " << p[bad] << ", U = " << U[bad]
+            << ", rhoE = " << rhoE[bad];
+        where[Pstream::myProcNo()] = os.str();
+    }
+    Pstream::gatherList(where);
+    Pstream::scatterList(where);
+    string first;
+    forAll(where, proci)
+    {
+        if (!where[proci].empty())
+        {
+            first = where[proci];
+            break;
+        }
+    }
+    FatalErrorInFunction
+        << "Negative or non-finite density/pressure: non-physical"
+        << " state at time " << mesh_.time().timeName() << " in "
+        << first.c_str() << nl
+        << "    Stopping without writing this time; the last written"
+        << " time is the last good state." << exit(FatalError);
 }
 
 

@@ -189,30 +189,41 @@ void Foam::blastFluidSolver::stateFromContent
     const scalarField& phi,
     const scalarField& cRho, const vectorField& cRhoU,
     const scalarField& cRhoE, const scalarField& cAlpha,
-    const scalarField& cAlphaRho1
+    const scalarField& cAlphaRho1,
+    DynamicList<label>* changed
 )
 {
     scalarField& rho = rho_.primitiveFieldRef();
     vectorField& rhoU = rhoU_.primitiveFieldRef();
     scalarField& rhoE = rhoE_.primitiveFieldRef();
+    scalarField* alpha =
+        twoPhase_ ? &alpha1Ptr_->primitiveFieldRef() : nullptr;
+    scalarField* ar1 =
+        twoPhase_ ? &alphaRho1Ptr_->primitiveFieldRef() : nullptr;
+    if (changed) changed->clear();
     forAll(phi, i)
     {
         if (phi[i] <= 0) continue;
         const scalar r = 1/phi[i];
-        rho[i] = r*cRho[i];
-        rhoU[i] = r*cRhoU[i];
-        rhoE[i] = r*cRhoE[i];
-    }
-    if (twoPhase_)
-    {
-        scalarField& alpha = alpha1Ptr_->primitiveFieldRef();
-        scalarField& ar1 = alphaRho1Ptr_->primitiveFieldRef();
-        forAll(phi, i)
+        const scalar newRho = r*cRho[i];
+        const vector newRhoU = r*cRhoU[i];
+        const scalar newRhoE = r*cRhoE[i];
+        bool differs =
+            newRho != rho[i] || newRhoU != rhoU[i] || newRhoE != rhoE[i];
+        rho[i] = newRho;
+        rhoU[i] = newRhoU;
+        rhoE[i] = newRhoE;
+        if (alpha)
         {
-            if (phi[i] <= 0) continue;
-            alpha[i] = min(max(cAlpha[i]/phi[i], scalar(0)), scalar(1));
-            ar1[i] = cAlphaRho1[i]/phi[i];
+            const scalar a =
+                min(max(cAlpha[i]/phi[i], scalar(0)), scalar(1));
+            const scalar m1 = cAlphaRho1[i]/phi[i];
+            differs = differs || a != (*alpha)[i] || m1 != (*ar1)[i];
+            (*alpha)[i] = a;
+            (*ar1)[i] = m1;
         }
+        // (a NaN differs from itself: it is listed, and stops the run)
+        if (changed && differs) changed->append(i);
     }
     primitivesCurrent_ = false;
 }
@@ -1188,11 +1199,25 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
         spreadEnergy_ += rest;
     }
     redistribute(phiField, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
-    stateFromContent(phi, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
 
     // The written state is the corrected one, checked now (a bad state
-    // stops the run before it is written)
-    primitivesFromConservative(true);
+    // stops the run before it is written). Only the cells whose state
+    // changed need new primitives (the cut cells and their
+    // neighbourhoods; a round-off share of the spread changes few others)
+    // when the others' are current, as the step leaves them
+    const bool current = primitivesCurrent_;
+    stateFromContent
+    (
+        phi, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1, &gathered_.cells
+    );
+    if (current)
+    {
+        primitivesOfCells(gathered_.cells);
+    }
+    else
+    {
+        primitivesFromConservative(true);
+    }
 }
 
 
@@ -1252,7 +1277,7 @@ void Foam::blastFluidSolver::addContent
             contentTo_[c] = true;
         }
     }
-    if (returnReduce(findIndex(contentTo_, true) >= 0, orOp<bool>()))
+    if (returnReduce(contentTo_.found(true), orOp<bool>()))
     {
         redistribute
         (
