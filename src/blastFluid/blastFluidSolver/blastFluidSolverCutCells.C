@@ -301,7 +301,7 @@ bool Foam::blastFluidSolver::markDeficientNeighbourhoods
         return false;
     }
     w.deficient.correctBoundaryConditions();
-    scalarField deficientNbr;
+    scalarField& deficientNbr = w.deficientNbr;
     coupledNeighbourValues(w.deficient, deficientNbr);
     // (a deficient cell is small: its faces are active)
     for (const label f : w.activeFaces)
@@ -1022,7 +1022,12 @@ void Foam::blastFluidSolver::setEmbeddedBoundary
     phi1Field.primitiveFieldRef() = phiEnd;
     phi1Field.correctBoundaryConditions();
     const scalarField& phi1 = phi1Field.primitiveField();
-    scalarField phi0Nbr, phi1Nbr;
+    if (!srd_.valid())
+    {
+        srd_.reset(new cutCellFields(mesh_));
+    }
+    scalarField& phi0Nbr = srd_->phiNbr;
+    scalarField& phi1Nbr = srd_->phi1Nbr;
     coupledNeighbourValues(fluidFractionPtr_(), phi0Nbr);
     coupledNeighbourValues(phi1Field, phi1Nbr);
 
