@@ -347,6 +347,81 @@ void Foam::blastFluidSolver::checkRestartState()
 }
 
 
+namespace
+{
+    // The per-cell steps of primitivesFromConservative and
+    // primitivesOfCells (one definition for both)
+
+    // Floors so that a vanishing phase or density stays finite
+    const Foam::scalar rhoFloor = 1e-12;
+    const Foam::scalar alphaEps = 1e-12;
+
+    // U and rhoe of a cell from its conservative state, screened before
+    // any operation that could trap (FOAM_SIGFPE): a bad state gets a
+    // harmless placeholder and false
+    inline bool velocityAndEnergy
+    (
+        const Foam::scalar rho, const Foam::vector& m, const Foam::scalar rhoE,
+        Foam::vector& U, Foam::scalar& rhoe
+    )
+    {
+        if
+        (
+            rho > 0 && std::isfinite(rho) && std::isfinite(rhoE)
+         && std::isfinite(m.x()) && std::isfinite(m.y())
+         && std::isfinite(m.z())
+        )
+        {
+            U = m/rho;
+            rhoe = rhoE - 0.5*(m & U);
+            return true;
+        }
+        U = Foam::Zero;
+        rhoe = 1;
+        return false;
+    }
+
+    // Phase densities of a two-material cell (alpha clipped to [0, 1])
+    inline void phaseDensities
+    (
+        const Foam::scalar rho, const Foam::scalar ar1,
+        Foam::scalar& alpha, Foam::scalar& r1, Foam::scalar& r2
+    )
+    {
+        using Foam::min;
+        using Foam::max;
+        const Foam::scalar a = min(max(alpha, Foam::scalar(0)), Foam::scalar(1));
+        alpha = a;
+        const Foam::scalar rhoi = max(rho, rhoFloor);
+        const Foam::scalar m1 = min(max(ar1, Foam::scalar(0)), rhoi);
+        r1 = max(m1/max(a, alphaEps), rhoFloor);
+        r2 = max((rhoi - m1)/max(1 - a, alphaEps), rhoFloor);
+    }
+
+    // The sound speed from c^2 where the state is physical (else 0 and
+    // false)
+    inline bool soundSpeed
+    (
+        const Foam::scalar rho, const Foam::scalar p, const Foam::scalar c2,
+        const Foam::scalar rhoE, const Foam::vector& rhoU, Foam::scalar& c
+    )
+    {
+        if
+        (
+            !(rho > 0) || !(p > 0) || !(c2 > 0)
+         || !std::isfinite(p) || !std::isfinite(c2)
+         || !std::isfinite(rhoE) || !std::isfinite(Foam::magSqr(rhoU))
+        )
+        {
+            c = 0;
+            return false;
+        }
+        c = Foam::sqrt(c2);
+        return true;
+    }
+}
+
+
 bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
 {
     const label n = mesh_.nCells();
@@ -362,28 +437,11 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
     label bad = -1;
     for (label i = 0; i < n; ++i)
     {
-        const vector& m = rhoU[i];
-        if
-        (
-            rho[i] > 0 && std::isfinite(rho[i]) && std::isfinite(rhoE[i])
-         && std::isfinite(m.x()) && std::isfinite(m.y())
-         && std::isfinite(m.z())
-        )
-        {
-            U[i] = m/rho[i];
-            rhoe_[i] = rhoE[i] - 0.5*(m & U[i]);
-        }
-        else
+        if (!velocityAndEnergy(rho[i], rhoU[i], rhoE[i], U[i], rhoe_[i]))
         {
             if (bad < 0) bad = i;
-            U[i] = Zero;
-            rhoe_[i] = 1;
         }
     }
-
-    // Phase densities: floor so that a vanishing phase stays finite
-    const scalar rhoFloor = 1e-12;
-    const scalar alphaEps = 1e-12;
 
     if (twoPhase_)
     {
@@ -393,12 +451,7 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
         scalarField& r2 = rho2Ptr_->primitiveFieldRef();
         for (label i = 0; i < n; ++i)
         {
-            const scalar a = min(max(alpha[i], scalar(0)), scalar(1));
-            alpha[i] = a;
-            const scalar rhoi = max(rho[i], rhoFloor);
-            const scalar m1 = min(max(ar1[i], scalar(0)), rhoi);
-            r1[i] = max(m1/max(a, alphaEps), rhoFloor);
-            r2[i] = max((rhoi - m1)/max(1 - a, alphaEps), rhoFloor);
+            phaseDensities(rho[i], ar1[i], alpha[i], r1[i], r2[i]);
         }
         mixture_.pc2(n, alpha, r1, r2, rho, rhoe_, p, c_, burnCells());
     }
@@ -414,20 +467,9 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
     // Check and take the square root of c^2
     for (label i = 0; i < n; ++i)
     {
-        const scalar c2 = c_[i];
-        if
-        (
-            !(rho[i] > 0) || !(p[i] > 0) || !(c2 > 0)
-         || !std::isfinite(p[i]) || !std::isfinite(c2)
-         || !std::isfinite(rhoE[i]) || !std::isfinite(magSqr(rhoU[i]))
-        )
+        if (!soundSpeed(rho[i], p[i], c_[i], rhoE[i], rhoU[i], c_[i]))
         {
             if (bad < 0) bad = i;
-            c_[i] = 0;
-        }
-        else
-        {
-            c_[i] = sqrt(c2);
         }
         e[i] = rhoe_[i]/max(rho[i], VSMALL);
     }
@@ -458,18 +500,7 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
         stopOnBadCell(bad);
     }
 
-    p_.correctBoundaryConditions();
-    U_.correctBoundaryConditions();
-    if (twoPhase_)
-    {
-        alpha1Ptr_->correctBoundaryConditions();
-        rho1Ptr_->correctBoundaryConditions();
-        rho2Ptr_->correctBoundaryConditions();
-    }
-    else
-    {
-        rho_.correctBoundaryConditions();
-    }
+    correctPrimitiveBoundaries();
 
     primitivesCurrent_ = true;
     return true;
@@ -479,9 +510,9 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
 void Foam::blastFluidSolver::primitivesOfCells(const labelUList& cells)
 {
     // primitivesFromConservative(true) for these cells only, the same
-    // operations cell by cell (the equation of state on the gathered
-    // cells), so that every primitive is what the whole-mesh call would
-    // give: the caller knows the other cells' primitives are current
+    // per-cell steps (the equation of state on the gathered cells), so
+    // that every primitive is what the whole-mesh call would give: the
+    // caller knows the other cells' primitives are current
     const label m = cells.size();
     const scalarField& rho = rho_.primitiveField();
     const vectorField& rhoU = rhoU_.primitiveField();
@@ -489,8 +520,6 @@ void Foam::blastFluidSolver::primitivesOfCells(const labelUList& cells)
     vectorField& U = U_.primitiveFieldRef();
     scalarField& p = p_.primitiveFieldRef();
     scalarField& e = e_.primitiveFieldRef();
-    const scalar rhoFloor = 1e-12;
-    const scalar alphaEps = 1e-12;
 
     // Gathered lists grow only (no allocation once they fit)
     gatheredStates& g = gathered_;
@@ -500,22 +529,9 @@ void Foam::blastFluidSolver::primitivesOfCells(const labelUList& cells)
     forAll(cells, k)
     {
         const label i = cells[k];
-        const vector& mi = rhoU[i];
-        if
-        (
-            rho[i] > 0 && std::isfinite(rho[i]) && std::isfinite(rhoE[i])
-         && std::isfinite(mi.x()) && std::isfinite(mi.y())
-         && std::isfinite(mi.z())
-        )
-        {
-            U[i] = mi/rho[i];
-            rhoe_[i] = rhoE[i] - 0.5*(mi & U[i]);
-        }
-        else
+        if (!velocityAndEnergy(rho[i], rhoU[i], rhoE[i], U[i], rhoe_[i]))
         {
             if (bad < 0) bad = i;
-            U[i] = Zero;
-            rhoe_[i] = 1;
         }
         g.rhoe[k] = rhoe_[i];
     }
@@ -530,13 +546,8 @@ void Foam::blastFluidSolver::primitivesOfCells(const labelUList& cells)
         forAll(cells, k)
         {
             const label i = cells[k];
-            const scalar a = min(max(alpha[i], scalar(0)), scalar(1));
-            alpha[i] = a;
-            const scalar rhoi = max(rho[i], rhoFloor);
-            const scalar m1 = min(max(ar1[i], scalar(0)), rhoi);
-            r1[i] = max(m1/max(a, alphaEps), rhoFloor);
-            r2[i] = max((rhoi - m1)/max(1 - a, alphaEps), rhoFloor);
-            g.alpha[k] = a;
+            phaseDensities(rho[i], ar1[i], alpha[i], r1[i], r2[i]);
+            g.alpha[k] = alpha[i];
             g.r1[k] = r1[i];
             g.r2[k] = r2[i];
             g.rho[k] = rho[i];
@@ -563,20 +574,9 @@ void Foam::blastFluidSolver::primitivesOfCells(const labelUList& cells)
     {
         const label i = cells[k];
         p[i] = g.p[k];
-        const scalar c2 = g.c2[k];
-        if
-        (
-            !(rho[i] > 0) || !(p[i] > 0) || !(c2 > 0)
-         || !std::isfinite(p[i]) || !std::isfinite(c2)
-         || !std::isfinite(rhoE[i]) || !std::isfinite(magSqr(rhoU[i]))
-        )
+        if (!soundSpeed(rho[i], p[i], g.c2[k], rhoE[i], rhoU[i], c_[i]))
         {
             if (bad < 0) bad = i;
-            c_[i] = 0;
-        }
-        else
-        {
-            c_[i] = sqrt(c2);
         }
         e[i] = rhoe_[i]/max(rho[i], VSMALL);
     }
@@ -584,7 +584,13 @@ void Foam::blastFluidSolver::primitivesOfCells(const labelUList& cells)
     {
         stopOnBadCell(bad);
     }
+    correctPrimitiveBoundaries();
+    primitivesCurrent_ = true;
+}
 
+
+void Foam::blastFluidSolver::correctPrimitiveBoundaries()
+{
     p_.correctBoundaryConditions();
     U_.correctBoundaryConditions();
     if (twoPhase_)
@@ -597,7 +603,6 @@ void Foam::blastFluidSolver::primitivesOfCells(const labelUList& cells)
     {
         rho_.correctBoundaryConditions();
     }
-    primitivesCurrent_ = true;
 }
 
 
