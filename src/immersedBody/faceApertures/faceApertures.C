@@ -547,29 +547,39 @@ void Foam::faceApertures::update
 }
 
 
-void Foam::faceApertures::faceStatesFromCells
+void Foam::faceApertures::cellStatesOf
 (
-    const labelUList& owner,
-    const labelUList& neighbour,
     const UList<bool>& boundaryCell,
     const scalarField& alpha,
-    labelList& faceState
+    labelList& cellState
 )
 {
     // A cell decided by its centroid has alpha exactly 0 or 1; anything
     // else (a clipped cell) tells nothing
-    auto stateOf = [&](const label c) -> label
+    cellState.setSize(alpha.size());
+    forAll(alpha, c)
     {
-        if (c < 0 || boundaryCell[c]) return -1;
-        return alpha[c] == 1 ? 1 : alpha[c] == 0 ? 0 : -1;
-    };
+        const scalar a = alpha[c];
+        cellState[c] = boundaryCell[c] ? -1 : a == 1 ? 1 : a == 0 ? 0 : -1;
+    }
+}
+
+
+void Foam::faceApertures::faceStatesFromCells
+(
+    const labelUList& owner,
+    const labelUList& neighbour,
+    const labelUList& cellState,
+    labelList& faceState
+)
+{
     faceState.setSize(owner.size());
     forAll(owner, f)
     {
-        label s = stateOf(owner[f]);
-        if (s < 0 && f < neighbour.size())
+        label s = cellState[owner[f]];
+        if (s < 0 && f < neighbour.size() && neighbour[f] >= 0)
         {
-            s = stateOf(neighbour[f]);
+            s = cellState[neighbour[f]];
         }
         faceState[f] = s;
     }

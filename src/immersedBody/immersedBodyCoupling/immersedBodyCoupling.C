@@ -242,19 +242,11 @@ void Foam::immersedBodyCoupling::startStep
     );
     copyToFields();
     areaOf(alphaWork_, solidAreaStart_);
+    faceApertures::cellStatesOf(boundaryCell_, alphaWork_, cellStateStart_);
     faceApertures::faceStatesFromCells
     (
-        mesh_.faceOwner(), mesh_.faceNeighbour(), boundaryCell_, alphaWork_,
-        faceState_
+        mesh_.faceOwner(), mesh_.faceNeighbour(), cellStateStart_, faceState_
     );
-
-    cellStateStart_.setSize(mesh_.nCells());
-    forAll(cellStateStart_, c)
-    {
-        const scalar a = alphaWork_[c];
-        cellStateStart_[c] =
-            boundaryCell_[c] ? -1 : a == 1 ? 1 : a == 0 ? 0 : -1;
-    }
 
     // Apertures of every face over the linear motion from start to end
     apertures_->update(xStart_, xEnd_, tris, outlineEdges_, faceState_);

@@ -450,10 +450,11 @@ TEST(faceApertures, boundaryOnlyPathsEqualClippingEverywhere)
             // not cross take that cell's state, the rest as apFast; the
             // same values bit for bit (a known face is covered wholly or
             // not at all, as its midpoint test says)
-            labelList state;
+            labelList cellState, state;
+            faceApertures::cellStatesOf(cut, alphaFast, cellState);
             faceApertures::faceStatesFromCells
             (
-                g.owner, g.neighbour, cut, alphaFast, state
+                g.owner, g.neighbour, cellState, state
             );
             apKnown.update(x0, x1, b.triangles, outline, state);
             forAll(g.start, f)
