@@ -20,6 +20,10 @@ Foam::ductNetwork::ductNetwork
     flux_(fluxScheme::New(dict)),
     rk_(dict),
     frictionFactor_(dict.getOrDefault<scalar>("frictionFactor", 0)),
+    kapila_
+    (
+        mixture.twoPhase() && dict.getOrDefault<bool>("kapilaTerm", true)
+    ),
     dt_(0),
     one_(1), one1_(1), one2_(1), oneRho_(1), oneP_(1), oneE_(1), oneC2_(1),
     wallWork_(0)
@@ -60,6 +64,7 @@ void Foam::ductNetwork::setSize(const label nVolumes, const label nInterfaces)
         scalarField* q :
         {
             &m0_, &mE0_, &aV0_, &m10_, &Rm_, &RmE_, &RaV_, &Rm1_, &V_, &dVdt_,
+            &dilatation_,
             &rho_, &p_, &c_, &alpha_, &rho1_, &rho2_, &rhoe_, &c2_, &waveSum_,
             &wallWorkOf_, &pMean_
         }
@@ -373,6 +378,7 @@ void Foam::ductNetwork::stage(const scalar a, const scalar b, const scalar dt)
     const geometry& g = geometry_;
     const bool twoPhase = mixture_.twoPhase();
     Rm_ = 0; RmU_ = Zero; RmE_ = 0; RaV_ = 0; Rm1_ = 0;
+    dilatation_ = dVdt_;
     forAll(g.owner, f)
     {
         const label P = g.owner[f], N = g.neighbour[f];
@@ -397,10 +403,12 @@ void Foam::ductNetwork::stage(const scalar a, const scalar b, const scalar dt)
         {
             Rm1_[P] -= F_.rhoY1[f];
             RaV_[P] -= F_.alpha[f] - alpha_[P]*F_.uS[f];
+            dilatation_[P] += F_.uS[f];
             if (N >= 0)
             {
                 Rm1_[N] += F_.rhoY1[f];
                 RaV_[N] += F_.alpha[f] - alpha_[N]*F_.uS[f];
+                dilatation_[N] -= F_.uS[f];
             }
         }
     }
@@ -425,6 +433,12 @@ void Foam::ductNetwork::stage(const scalar a, const scalar b, const scalar dt)
         if (twoPhase)
         {
             RaV_[i] += alpha_[i]*dVdt_[i];
+            if (kapila_)
+            {
+                RaV_[i] +=
+                    kapilaCoefficient(alpha_[i], rho1_[i], rho2_[i], p_[i])
+                   *dilatation_[i];
+            }
             aV_[i] = a*aV0_[i] + (1 - a)*(aV_[i] + dt*RaV_[i]);
             m1_[i] = a*m10_[i] + (1 - a)*(m1_[i] + dt*Rm1_[i]);
         }
@@ -521,6 +535,27 @@ Foam::scalar Foam::ductNetwork::maxDeltaT(const scalar Co) const
         }
     }
     return dt;
+}
+
+
+Foam::scalar Foam::ductNetwork::kapilaCoefficient
+(
+    const scalar alpha1,
+    const scalar rho1,
+    const scalar rho2,
+    const scalar p
+) const
+{
+    const scalar a1 = min(max(alpha1, scalar(0)), scalar(1)), a2 = 1 - a1;
+    // rho c^2 of each material at the common pressure
+    const scalar z1 = rho1*mixture_.eos(0).c2(rho1, p);
+    const scalar z2 = rho2*mixture_.eos(1).c2(rho2, p);
+    const scalar d = a1*z2 + a2*z1;
+    if (!(z1 > 0) || !(z2 > 0) || !(d > 0))
+    {
+        return 0;
+    }
+    return a1*a2*(z2 - z1)/d;
 }
 
 

@@ -33,7 +33,8 @@ Foam::crackGasCoupling::crackGasCoupling
 {
     // A misspelt entry would silently take its default
     const wordList valid
-    ({"flux", "RKorder", "frictionFactor", "minAperture", "ambient"});
+    ({"flux", "RKorder", "frictionFactor", "kapilaTerm", "minAperture",
+      "ambient"});
     for (const word& key : dict.toc())
     {
         if (!valid.found(key))

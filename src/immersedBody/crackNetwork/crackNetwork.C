@@ -525,14 +525,15 @@ void Foam::crackNetwork::fill
 (
     const scalar rho,
     const scalar p,
-    const UList<vector2D>& x
+    const UList<vector2D>& x,
+    const scalar alpha1
 )
 {
     const scalarField V(gapAreas(x));
     gas_.geom().V0 = V;
     forAll(cvJoint_, i)
     {
-        gas_.setState(i, rho, Zero, p, 1);
+        gas_.setState(i, rho, Zero, p, alpha1);
     }
     createdMass_ = createdEnergy_ = removedMass_ = removedEnergy_ = 0;
 }
@@ -568,6 +569,15 @@ void Foam::crackNetwork::beginStep
         for (label k = 0; k < 4; ++k) dLast_[i][k] = d[jn[k]];
     }
     addVoidShares(x, V0_);
+    // The material-1 volume of each gas moves with its gap in the
+    // sub-steps (Kapila term), from the content's at the start
+    aVNow_.setSize(n); VLast_.setSize(n); KLast_.setSize(n);
+    forAll(cvJoint_, i)
+    {
+        aVNow_[i] = content0_[i].aV;
+        VLast_[i] = V0_[i];
+        gapPressure(i, V0_[i], aVNow_[i]/V0_[i], &KLast_[i]);
+    }
     floored_.setSize(n);
     openNow_.setSize(2*n);
     voidForce_ = Zero;
@@ -619,7 +629,9 @@ void Foam::crackNetwork::jointFields
 Foam::scalar Foam::crackNetwork::gapPressure
 (
     const label i,
-    const scalar V
+    const scalar V,
+    const scalar alpha,
+    scalar* K
 ) const
 {
     // The gas's own state: its content at the step's start, in the gap's
@@ -632,11 +644,16 @@ Foam::scalar Foam::crackNetwork::gapPressure
         return mixture_.p(1, rho, rho, rhoe);
     }
     const scalar alphaEps = 1e-12, rhoFloor = 1e-12;
-    const scalar a = min(max(c.aV/V0_[i], scalar(0)), scalar(1));
+    const scalar a = min(max(alpha, scalar(0)), scalar(1));
     const scalar m1 = min(max(c.m1, scalar(0)), c.m);
     const scalar rho1 = max(m1/(max(a, alphaEps)*V), rhoFloor);
     const scalar rho2 = max((c.m - m1)/(max(1 - a, alphaEps)*V), rhoFloor);
-    return mixture_.p(a, rho1, rho2, rhoe);
+    const scalar p = mixture_.p(a, rho1, rho2, rhoe);
+    if (K)
+    {
+        *K = gas_.kapila() ? gas_.kapilaCoefficient(a, rho1, rho2, p) : 0;
+    }
+    return p;
 }
 
 
@@ -676,11 +693,25 @@ void Foam::crackNetwork::updateForces
         // shut beyond a, nor at all at its floor L a/2). A force on faces
         // pressed into each other would do work with no volume to pay it
         // from, and drain the gas
-        const scalar p = gapPressure(i, V_[i]);
+        // The materials share the gap's change as their compressibilities
+        // ask (explicit over a sub-step: it changes the gap by 5 % at
+        // most, stableSubStep)
+        aVNow_[i] = min
+        (
+            max
+            (
+                aVNow_[i]
+              + (aVNow_[i]/VLast_[i] + KLast_[i])*(V_[i] - VLast_[i]),
+                scalar(0)
+            ),
+            V_[i]
+        );
+        VLast_[i] = V_[i];
+        const scalar p = gapPressure(i, V_[i], aVNow_[i]/V_[i], &KLast_[i]);
         // Spent gas (p -> 0 on its isentrope) pushes no more; what it did
         // is paid at the step's end, where a state the work left
         // unphysical stops the run (ductNetwork::addEnergy)
-        p_[i] = max(p, scalar(0));
+        p_[i] = max(min(p, 4*(eInt0_[i] - work_[i])/V_[i]), scalar(0));
         const vector2D f = -0.5*p_[i]*L_[i]*n_[i];
         const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
         FixedList<vector2D, 2>& last = faceForce_[i];
@@ -919,6 +950,16 @@ Foam::scalar Foam::crackNetwork::endStep
             g.V1[i] = VEnd_[i];
         }
         scalar h = min(dt - t, gas_.maxDeltaT(0.4));
+        // With the Kapila term, no gap changes by more than 10 % in a
+        // sub-step (it is explicit in the materials' share)
+        if (gas_.kapila())
+        {
+            forAll(VEnd_, i)
+            {
+                const scalar rate = mag(VEnd_[i] - V0_[i])/dt;
+                if (rate > 0) h = min(h, 0.1*g.V0[i]/rate);
+            }
+        }
         // No sliver of a last sub-step
         if (dt - t - h < 1e-3*h) h = dt - t;
         const scalar s1 = min((t + h)/dt, scalar(1));
@@ -1099,7 +1140,7 @@ void Foam::crackNetwork::readState
                     << " aV >= 0, m1 >= 0, to round-off)"
                     << exit(FatalIOError);
             }
-            const scalar p = gapPressure(i, V[i]);
+            const scalar p = gapPressure(i, V[i], aV[i]/V[i]);
             if (!(p > 0) || !std::isfinite(p))
             {
                 FatalIOErrorInFunction(dict)
