@@ -111,6 +111,45 @@ void Foam::crackNetwork::jointGeometry
 }
 
 
+void Foam::crackNetwork::gapForces
+(
+    const jointNodeList& jn,
+    const UList<vector2D>& x,
+    const bool floored,
+    const scalar* open,
+    const scalar p,
+    FixedList<vector2D, 4>& f
+) const
+{
+    // f = p grad V of the gap area of jointGeometry. With d = p1 - p0,
+    // L n = (d.y, -d.x) and w_e = q_e - p_e, an open end contributes
+    // (w_e.(L n) + a L)/2: its gradient is +-L n/2 on q_e and p_e, and,
+    // through d, +-(rot90(w_e) + a t)/2 on p1 and p0 (rot90(w) =
+    // (-w.y, w.x) = g t - s n for w = g n + s t: the faces' offset along
+    // the joint turns them). Without these, a sheared gap closed at one end
+    // had its volume change by rotation while its forces did no work:
+    // squeezed, its gas lost energy instead of gaining it. At the floor
+    // (L a/2) and at a shut end: no force (no volume to pay work from)
+    f = vector2D::zero;
+    if (floored || !(p > 0)) return;
+    const scalar a = minAperture_;
+    const vector2D d = x[jn[1]] - x[jn[0]];
+    const scalar L = mag(d);
+    if (!(L > 0)) return;
+    const vector2D Ln(d.y(), -d.x()), t(d/L);
+    for (const label e : {0, 1})
+    {
+        if (!(open[e] + a > 0)) continue;
+        const vector2D w = x[jn[2 + e]] - x[jn[e]];
+        const vector2D turn = 0.5*p*(vector2D(-w.y(), w.x()) + a*t);
+        f[2 + e] += 0.5*p*Ln;
+        f[e] -= 0.5*p*Ln;
+        f[1] += turn;
+        f[0] -= turn;
+    }
+}
+
+
 Foam::scalarField Foam::crackNetwork::gapAreas(const UList<vector2D>& x) const
 {
     scalarField V(cvJoint_.size());
@@ -379,8 +418,8 @@ void Foam::crackNetwork::setJoints
     connect();
     mouths_.clear();
     gas_.setSize(cvJoint_.size(), links_.size());
-    faceForce_.setSize(cvJoint_.size());
-    faceForce_ = FixedList<vector2D, 2>(Zero);
+    nodeForce_.setSize(cvJoint_.size());
+    nodeForce_ = FixedList<vector2D, 4>(Zero);
     const scalarField V(gapAreas(x));
 
     // Joints that stay keep their content
@@ -549,7 +588,7 @@ void Foam::crackNetwork::beginStep
     V0_.setSize(n); Gamma_.setSize(n); open0_.setSize(2*n);
     content0_.setSize(n); eInt0_.setSize(n);
     V_.setSize(n); L_.setSize(n); p_.setSize(n); n_.setSize(n);
-    faceForce_.setSize(n); work_.setSize(n); dLast_.setSize(n);
+    nodeForce_.setSize(n); work_.setSize(n); dLast_.setSize(n);
     const ductNetwork& g = gas_;
     forAll(cvJoint_, i)
     {
@@ -563,7 +602,7 @@ void Foam::crackNetwork::beginStep
         const ductNetwork::content c = g.contentOf(i);
         content0_[i] = c;
         eInt0_[i] = c.mE - 0.5*magSqr(c.mU)/c.m;
-        faceForce_[i] = FixedList<vector2D, 2>(Zero);
+        nodeForce_[i] = FixedList<vector2D, 4>(Zero);
         work_[i] = 0;
         const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
         for (label k = 0; k < 4; ++k) dLast_[i][k] = d[jn[k]];
@@ -711,18 +750,15 @@ void Foam::crackNetwork::updateForces
         // Spent gas (p -> 0 on its isentrope) pushes no more; what it did
         // is paid at the step's end, where a state the work left
         // unphysical stops the run (ductNetwork::addEnergy)
-        p_[i] = max(min(p, 4*(eInt0_[i] - work_[i])/V_[i]), scalar(0));
-        const vector2D f = -0.5*p_[i]*L_[i]*n_[i];
+        p_[i] = max(p, scalar(0));
         const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
-        FixedList<vector2D, 2>& last = faceForce_[i];
-        for (const label e : {0, 1})
+        FixedList<vector2D, 4> fNew(Zero);
+        gapForces(jn, x, floored_[i], &openNow_[2*i], p_[i], fNew);
+        FixedList<vector2D, 4>& last = nodeForce_[i];
+        for (label k = 0; k < 4; ++k)
         {
-            const bool open = !floored_[i] && openNow_[2*i + e] + a > 0;
-            const vector2D fe = open ? f : vector2D::zero;
-            const vector2D df = fe - last[e];
-            last[e] = fe;
-            nodeForces[jn[e]] += df;
-            nodeForces[jn[2 + e]] -= df;
+            nodeForces[jn[k]] += fNew[k] - last[k];
+            last[k] = fNew[k];
         }
     }
     // A void's corners: the mean pressure of the volumes sharing it times
@@ -845,8 +881,9 @@ void Foam::crackNetwork::addWork(const UList<vector2D>& d)
         {
             dd[k] = d[jn[k]] - last[k];
         }
-        const FixedList<vector2D, 2>& f = faceForce_[i];
-        work_[i] += (f[0] & (dd[0] - dd[2])) + (f[1] & (dd[1] - dd[3]));
+        const FixedList<vector2D, 4>& f = nodeForce_[i];
+        work_[i] +=
+            (f[0] & dd[0]) + (f[1] & dd[1]) + (f[2] & dd[2]) + (f[3] & dd[3]);
         for (label k = 0; k < 4; ++k) last[k] = d[jn[k]];
     }
     // A void's forces (P G_c on its corners, P the mean of its shares'
@@ -1105,8 +1142,8 @@ void Foam::crackNetwork::readState
     connect();
     mouths_.clear();
     gas_.setSize(n, links_.size());
-    faceForce_.setSize(n);
-    faceForce_ = FixedList<vector2D, 2>(Zero);
+    nodeForce_.setSize(n);
+    nodeForce_ = FixedList<vector2D, 4>(Zero);
     forAll(joints, i)
     {
         gas_.setContent(i, {m[i], mE[i], aV[i], m1[i], mU[i]});

@@ -339,6 +339,141 @@ TEST(crackNetwork, productsAndAirInAGapDriveTwoBlocksApart)
 }
 
 
+TEST(crackNetwork, shearedGapTurningPaysItsVolumeChange)
+{
+    // One broken joint between two blocks, the right block 0.1 mm away
+    // and slid 1 mm along the joint; air at 10 bar in the gap (closed: no
+    // neighbours). The left block turns about the joint's first node by
+    // 0.02 rad over 2000 prescribed sub-steps (no dynamics), the way that
+    // opens the gap. The faces' offset along the joint turns with them, so
+    // the gap's volume changes through the normal's rotation too; the
+    // gas's forces, p times the gradient of the volume, must do p dV over
+    // it: the gas ends on its isentrope p0 (V0/V)^1.4. Printed beside: the
+    // share of p dV that the faces' normal forces alone (without the couple
+    // of the offset) would have paid
+    const scalar H = 0.01, W = 0.02, sep0 = 1e-4, slide = 1e-3, a = 1e-6;
+    const scalar p0 = 1e6, gamma = 1.4;
+    const triangleMesh mesh =
+        triangleMesh::rectangle(vector2D(0, 0), vector2D(W, H), 2, 4, "rock");
+    femdemSolid solid(mesh, rockDict("1e11"));
+    const DynamicList<label> crack = breakJoints
+    (
+        solid,
+        [&](const vector2D& p, const vector2D& q)
+        {
+            return mag(p.x() - 0.5*W) < 1e-12 && mag(q.x() - 0.5*W) < 1e-12;
+        }
+    );
+    ASSERT_EQ(crack.size(), 4);
+    boolList right(solid.nNodes(), false);
+    for (label t = 0; t < solid.nNodes()/3; ++t)
+    {
+        const scalar xc =
+            (solid.x()[3*t].x() + solid.x()[3*t + 1].x() + solid.x()[3*t + 2].x())/3;
+        for (label k = 0; k < 3; ++k)
+        {
+            right[3*t + k] = xc > 0.5*W;
+            if (right[3*t + k])
+            {
+                solid.xRef()[3*t + k] += vector2D(sep0, slide);
+            }
+        }
+    }
+    startFromHere(solid);
+    const label j = crack[1];
+    const jointNodeList& jn = solid.topology().jointNodes()[j];
+    blastMixture mix(dictOf("materials (air); air { equationOfState idealGas; gamma 1.4; }"));
+    crackNetwork net(solid.topology(), mix, dictOf("RKorder 2;"));
+    net.setJoints(labelList(1, j), solid.x());
+    net.fill(10, p0, solid.x());
+    const List<vector2D> x0(solid.x());
+
+    // The prescribed positions: the left block turned by theta about the
+    // joint's first node
+    const vector2D pivot = x0[jn[0]];
+    auto turned = [&](const scalar theta)
+    {
+        List<vector2D> x(x0);
+        const scalar c = Foam::cos(theta), sn = Foam::sin(theta);
+        forAll(x, k)
+        {
+            if (right[k]) continue;
+            const vector2D r = x0[k] - pivot;
+            x[k] = pivot + vector2D(c*r.x() - sn*r.y(), sn*r.x() + c*r.y());
+        }
+        return x;
+    };
+    // The gap's area (jointGeometry's definition) and the faces' normal
+    // forces alone (+-p L/2 n at the open ends) for the control
+    auto area = [&](const List<vector2D>& x, vector2D* fN)
+    {
+        const vector2D d = x[jn[1]] - x[jn[0]];
+        const scalar L = mag(d);
+        const vector2D n(d.y()/L, -d.x()/L);
+        scalar A = 0;
+        for (const label e : {0, 1})
+        {
+            const scalar g = (x[jn[2 + e]] - x[jn[e]]) & n;
+            A += 0.5*L*max(g + a, scalar(0));
+            if (fN) fN[e] = 0.5*L*n;
+        }
+        return max(A, 0.5*L*a);
+    };
+    const scalar V0 = area(x0, nullptr);
+    const scalar theta = area(turned(0.02), nullptr) > V0 ? 0.02 : -0.02;
+
+    const label N = 2000;
+    List<vector2D> f(solid.nNodes(), Zero), d(solid.nNodes(), Zero);
+    net.beginStep(x0, d);
+    scalar pdV = 0, normalOnly = 0;
+    List<vector2D> x(x0);
+    for (label k = 0; k < N; ++k)
+    {
+        net.updateForces(x, f);
+        const List<vector2D> xNext(turned(theta*(k + 1)/N));
+        forAll(d, n) d[n] = xNext[n] - x0[n];
+        net.addWork(d);
+        // The control: the normal forces' work at the isentrope's pressure
+        vector2D fN[2];
+        const scalar V = area(x, fN), Vn = area(xNext, nullptr);
+        const scalar pk = p0*Foam::pow(V0/V, gamma);
+        pdV += pk*(Vn - V);
+        for (const label e : {0, 1})
+        {
+            normalOnly += pk*(fN[e] & ((xNext[jn[2 + e]] - x[jn[2 + e]])
+              - (xNext[jn[e]] - x[jn[e]])));
+        }
+        x = xNext;
+    }
+    const scalar E0 = net.gas().energy();
+    const scalar paid = net.endStep(x, 1e-6);
+    const scalar V1 = area(x, nullptr);
+    const scalar pExact = p0*Foam::pow(V0/V1, gamma);
+    const scalar eP = mag(net.gas().p()[0]/pExact - 1);
+    const scalar eW = mag(paid/pdV - 1);
+    const scalar controlShare = normalOnly/pdV;
+    const scalar dE = mag(net.gas().energy() - E0 + paid)/E0;
+    std::printf
+    (
+        ">> sheared gap turned %.3g rad: V1/V0 %.4f; gas pressure on the"
+        " isentrope to %.2e (tolerance 1e-3); work paid / (p dV) - 1 %.2e"
+        " (1e-3); gas energy change + work %.1e (1e-12); the normal forces"
+        " alone would pay %.3f of p dV\n",
+        theta, V1/V0, eP, eW, dE, controlShare
+    );
+    record("pressureOverIsentrope_minus1", eP);
+    record("workOverPdV_minus1", eW);
+    record("normalForcesOnlyShareOfPdV", controlShare);
+    EXPECT_LT(eP, 1e-3);
+    EXPECT_LT(eW, 1e-3);
+    EXPECT_LT(dE, 1e-12);
+    EXPECT_GT(V1/V0, 1.2);
+    // The configuration exercises the couple: the normal forces alone
+    // would be far off
+    EXPECT_GT(mag(controlShare - 1), 0.1);
+}
+
+
 TEST(crackNetwork, jointsJoiningAndLeavingKeepTheGas)
 {
     // A line of 4 broken joints holding gas; two more join (they share the
