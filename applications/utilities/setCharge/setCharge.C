@@ -33,17 +33,21 @@ Description
     first, each over the ambient and the fills before it): material m at
     density rho_F (entry 'rho', default the cell's rho.<m>) and the cell's
     pressure p_a, at rest. A cell covered by the fraction g gets, conserving
-    mass and energy,
+    mass,
         alpha_m = g + (1 - g) alpha_m,a,   alpha_j = (1 - g) alpha_j,a,
         alpha_m rho_m = g rho_F + (1 - g) alpha_m,a rho_m,a,
-        rho e = g (p_a - pRef_m(rho_F))/Gamma_m + (1 - g) (rho e)_a,
     every other alpha floored at alphaMin (the products' trace stays
-    alphaMin), the floor taken from alpha_m, and the equilibrium pressure
-    (p_a for stiffened and ideal gases, whose Gamma and pRef do not depend
-    on the density). A fully covered cell's traces take rho_F. A charge
-    placed in a fill replaces it where it covers (the same rule with the
-    products at rho0 and rho e = E0; with two materials and no fill the
-    charge rule above, unchanged).
+    alphaMin), the floor taken from alpha_m, the momentum of the ambient
+    kept, and the pressure p_a: with ideal and stiffened gases (Gamma, pRef
+    independent of the density) this is the energy-conserving mix
+        rho e = g (p_a - pRef_m)/Gamma_m + (1 - g) (rho e)_a,
+    exactly but for the traces floored at alphaMin (and a trace's density,
+    rho_F in a fully covered cell): taken at p_a too. (Mixed by energy
+    instead, a water fill's pInf energy, 7.8e8 J/m3 at 1 atm, carried by
+    1e-6 traces, put the water 0.3-16 kPa above 1 atm.) A charge placed in
+    a fill replaces it where it covers (with three materials by the same
+    rule, the products at rho0 and, conserving energy, rho e = E0; with two
+    materials the charge rule above, unchanged).
     A cell covered by the fraction f (sub-sampled on nSample points per
     solved direction of its bounding box) gets, conserving mass,
         alpha = f + (1 - f) alpha_a,  alpha rho1 = f rho0 + (1-f) alpha_a rho1_a,
@@ -774,7 +778,8 @@ struct chargeFields
 //- Put the fraction g of material k at density rk and internal energy per
 //  unit volume rhoeK, at rest, into cell i, conserving mass and energy
 //  (any number of materials; fills, and charges with three materials).
-//  keepP: keep the cell's pressure instead (programmed-burn charges)
+//  keepP: keep the cell's pressure instead (fills: the material at the
+//  ambient pressure; programmed-burn charges); rhoeK, F0 unused then
 void mixMaterial
 (
     const label i,
@@ -797,8 +802,8 @@ void mixMaterial
     {
         rhoA += a[j]*r[j];
     }
-    const scalar rhoeA =
-        mixture.rhoeOf(UList<scalar>(a.begin(), n), UList<scalar>(r.begin(), n), fld.p[i], F0);
+    const UList<scalar> aList(a.begin(), n), rList(r.begin(), n);
+    const scalar rhoeA = keepP ? 0 : mixture.rhoeOf(aList, rList, fld.p[i], F0);
 
     // Masses and volumes after the mixing, the others floored at aMin
     scalar rest = 0;
@@ -823,11 +828,7 @@ void mixMaterial
     fld.set(i, n, a, r);
     if (!keepP)
     {
-        fld.p[i] = mixture.pOf
-        (
-            UList<scalar>(a.begin(), n), UList<scalar>(r.begin(), n),
-            g*rhoeK + (1 - g)*rhoeA, F0
-        );
+        fld.p[i] = mixture.pOf(aList, rList, g*rhoeK + (1 - g)*rhoeA, F0);
     }
     fld.U[i] = (1 - g)*rhoA*fld.U[i]/rho;
 }
@@ -899,7 +900,6 @@ void fillRegions
     const PtrList<dictionary>& fillDicts,
     const blastMixture& mixture,
     const label nSample,
-    const scalar t,
     chargeFields& fld,
     const fvMesh& mesh
 )
@@ -912,7 +912,6 @@ void fillRegions
     {
         one.set(0, new chargeShape(fills[c]));
         const label k = specs[c].material;
-        const equationOfState& eos = mixture.eos(k);
         const volScalarField& rhoField =
             k == 0 ? fld.rho1 : (k == 1 ? fld.rho2 : *fld.rho3);
         scalar volume = 0, mass = 0;
@@ -923,9 +922,8 @@ void fillRegions
             if (hits[0] == 0) continue;
             const scalar g = scalar(hits[0])/nTot;
             const scalar rk = specs[c].rho > 0 ? specs[c].rho : rhoField[i];
-            const scalar rhoeK = (fld.p[i] - eos.pRef(rk))/eos.Gamma(rk);
-            const scalar F0 = programmedBurn::fraction(t, fld.tb[i], fld.tau[i]);
-            mixMaterial(i, g, k, rk, rhoeK, false, mixture, F0, fld);
+            // At the cell's pressure (keepP; rhoeK, F0 unused)
+            mixMaterial(i, g, k, rk, 0, true, mixture, 1, fld);
             volume += g*mesh.V()[i];
             mass += g*mesh.V()[i]*rk;
         }
@@ -1064,7 +1062,7 @@ int main(int argc, char *argv[])
         {p, U, alpha, rho1, rho2, tb, tau, alpha2.get(), rho3.get()};
     labelList hits(charges.size(), label(0));
 
-    fillRegions(fills, fillSpecs, fillDicts, mixture, nSample, runTime.value(), fields, mesh);
+    fillRegions(fills, fillSpecs, fillDicts, mixture, nSample, fields, mesh);
 
     forAll(V, celli)
     {
