@@ -432,6 +432,30 @@ prep setChargeMaterialOrder tnt
 sed -i 's/^materials .*/materials (air products);/' constant/thermophysicalProperties
 check setChargeMaterialOrder "thermophysicalProperties" "'materials'" setCharge
 
+# Three materials (water decoupling): more than three materials; a fill of
+# an unknown material; three materials with the two-material crack gas
+prep thermoFourMaterials tntCharged
+sed -i 's/^materials .*/materials (products water air gas);/' constant/thermophysicalProperties
+check thermoFourMaterials thermophysicalProperties "'materials'" jwlIbFoam
+
+prep setChargeFillUnknownMaterial tnt
+sed -i 's/^charges/fills ( circle { centre (0 0 0); radius 0.02; material mud; } );\ncharges/' system/setChargeDict
+check setChargeFillUnknownMaterial setChargeDict "'material'" setCharge
+
+prep threeMaterialsCrackGas box
+sed -i 's/^materials .*/materials (products water air);/' constant/thermophysicalProperties
+cat >> constant/thermophysicalProperties <<'D'
+products { equationOfState JWL; explosive TNT; }
+water { equationOfState stiffenedGas; gamma 4.4; pInf 6e8; }
+D
+for f in alpha.products alpha.water; do
+    sed -e "s/object *rho;/object $f;/" -e 's/^dimensions.*/dimensions [0 0 0 0 0 0 0];/' \
+        -e 's/^internalField.*/internalField uniform 1e-6;/' 0/rho > 0/$f
+done
+for m in products water air; do sed "s/object *rho;/object rho.$m;/" 0/rho > 0/rho.$m; done
+echo 'crackGas { }' >> constant/immersedBodyProperties
+check threeMaterialsCrackGas immersedBodyProperties "'crackGas'" jwlIbFoam
+
 prep exactRiemannNegativeRho sod
 sed -i 's/^left .*/left { material air; rho -1; u 0; p 1; }/' system/exactRiemannDict
 check exactRiemannNegativeRho "exactRiemannDict" "'rho'" exactRiemann

@@ -9,8 +9,9 @@ Application
     setCharge
 
 Description
-    Places explosive charges into the fields of the start time of a
-    two-material jwlIbFoam case, and reports the mass and energy of each
+    Places explosive charges (and, before them, regions filled with another
+    material, e.g. a water gap) into the fields of the start time of a
+    two- or three-material jwlIbFoam case, and reports the mass and energy of each
     charge (in the mesh volume: per unit depth of a 2D mesh, the wedge's
     share of an axisymmetric one). A charge starts either in the
     constant-volume explosion state (products at rho0, e = E0/rho0, at rest;
@@ -25,7 +26,28 @@ Description
 
     The products are the first material of constant/thermophysicalProperties
     and must use the JWL equation of state (rho0, E0). The fields already in
-    the start time (p, U, alpha.<m1>, rho.<m1>, rho.<m2>) are the ambient.
+    the start time (p, U, alpha.<m1>, rho.<m1>, rho.<m2>; three materials
+    also alpha.<m2>, rho.<m3>) are the ambient.
+
+    Fills (optional entry 'fills', the same shapes as the charges, applied
+    first, each over the ambient and the fills before it): material m at
+    density rho_F (entry 'rho', default the cell's rho.<m>) and the cell's
+    pressure p_a, at rest. A cell covered by the fraction g gets, conserving
+    mass,
+        alpha_m = g + (1 - g) alpha_m,a,   alpha_j = (1 - g) alpha_j,a,
+        alpha_m rho_m = g rho_F + (1 - g) alpha_m,a rho_m,a,
+    every other alpha floored at alphaMin (the products' trace stays
+    alphaMin), the floor taken from alpha_m, the momentum of the ambient
+    kept, and the pressure p_a: with ideal and stiffened gases (Gamma, pRef
+    independent of the density) this is the energy-conserving mix
+        rho e = g (p_a - pRef_m)/Gamma_m + (1 - g) (rho e)_a,
+    exactly but for the traces floored at alphaMin (and a trace's density,
+    rho_F in a fully covered cell): taken at p_a too. (Mixed by energy
+    instead, a water fill's pInf energy, 7.8e8 J/m3 at 1 atm, carried by
+    1e-6 traces, put the water 0.3-16 kPa above 1 atm.) A charge placed in
+    a fill replaces it where it covers (with three materials by the same
+    rule, the products at rho0 and, conserving energy, rho e = E0; with two
+    materials the charge rule above, unchanged).
     A cell covered by the fraction f (sub-sampled on nSample points per
     solved direction of its bounding box) gets, conserving mass,
         alpha = f + (1 - f) alpha_a,  alpha rho1 = f rho0 + (1-f) alpha_a rho1_a,
@@ -41,6 +63,11 @@ Description
         nSample     8;                      // sub-samples per direction
         burnWidth   2;                      // programmed burn: cells the
                                             // burn front spreads over (> 0)
+        fills                               // optional, before the charges
+        (
+            circle { centre (0 0 0); radius 0.015; material water;
+                     rho 1000; }            // rho: optional (kg/m3)
+        );
         charges
         (
             box      { min (0 0 0); max (0.1 0.1 1); }
@@ -351,6 +378,99 @@ scalar cellSize(const boundBox& bb, const Vector<label>& solD)
 }
 
 
+//- The entries of a list of shapes 'key' of setChargeDict (a shape's entry
+//  given twice is an error, as in the file's own dictionaries: checkInput)
+PtrList<entry> readShapeList(const dictionary& dict, const word& key)
+{
+    const entry::inputMode oldMode = entry::globalInputMode;
+    entry::globalInputMode = entry::inputMode::ERROR;
+    PtrList<entry> entries(dict.lookup(key));
+    entry::globalInputMode = oldMode;
+    return entries;
+}
+
+
+//- A fill: a region of one material at the ambient pressure
+struct fillSpec
+{
+    label material;
+    //- Density of the material (< 0: the cell's own)
+    scalar rho;
+};
+
+
+//- Read the fills of setChargeDict (none if the entry is absent), each
+//  with its dictionary named after the file (errors name file and fill)
+void readFills
+(
+    const IOdictionary& dict,
+    const blastMixture& mixture,
+    PtrList<chargeShape>& shapes,
+    List<fillSpec>& specs,
+    PtrList<dictionary>& fillDicts
+)
+{
+    if (!dict.found("fills"))
+    {
+        return;
+    }
+    const PtrList<entry> entries(readShapeList(dict, "fills"));
+    shapes.setSize(entries.size());
+    specs.setSize(entries.size());
+    fillDicts.setSize(entries.size());
+    forAll(entries, i)
+    {
+        if (!entries[i].isDict())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'fills': each fill is 'shape { ... material m; }'"
+                << exit(FatalIOError);
+        }
+        fillDicts.set(i, new dictionary(dict, entries[i].dict()));
+        dictionary& fd = fillDicts[i];
+        fd.name() = dict.objectPath() + ".fills." + entries[i].keyword();
+        caseChecks::readNaming
+        (
+            fd,
+            [&]()
+            {
+                shapes.set(i, new chargeShape(entries[i].keyword(), fd));
+                wordList valid(shapes[i].entries());
+                valid.append(wordList({"material", "rho"}));
+                for (const entry& e : fd)
+                {
+                    if (!valid.found(e.keyword()))
+                    {
+                        FatalIOErrorInFunction(fd)
+                            << "Unknown entry '" << e.keyword() << "' of a "
+                            << shapes[i].type() << " fill. Valid: "
+                            << flatOutput(valid) << exit(FatalIOError);
+                    }
+                }
+                const word m(fd.get<word>("material"));
+                specs[i].material = mixture.index(m);
+                if (specs[i].material < 0)
+                {
+                    FatalIOErrorInFunction(fd)
+                        << "Entry 'material' " << m << " of a fill is not"
+                        << " one of the materials "
+                        << flatOutput(mixture.materials())
+                        << " of constant/thermophysicalProperties"
+                        << exit(FatalIOError);
+                }
+                specs[i].rho = fd.getOrDefault<scalar>("rho", -1);
+                if (fd.found("rho") && !(specs[i].rho > 0))
+                {
+                    FatalIOErrorInFunction(fd)
+                        << "Entry 'rho' of a fill must be > 0, got "
+                        << specs[i].rho << exit(FatalIOError);
+                }
+            }
+        );
+    }
+}
+
+
 //- Read the charges of setChargeDict: shape and initiation, each with its
 //  dictionary named after the file so that errors name file and charge
 void readCharges
@@ -364,12 +484,7 @@ void readCharges
     PtrList<dictionary>& chargeDicts
 )
 {
-    // A charge's entry given twice is an error, as in the file's own
-    // dictionaries (checkInput)
-    const entry::inputMode oldMode = entry::globalInputMode;
-    entry::globalInputMode = entry::inputMode::ERROR;
-    const PtrList<entry> entries(dict.lookup("charges"));
-    entry::globalInputMode = oldMode;
+    const PtrList<entry> entries(readShapeList(dict, "charges"));
     if (entries.empty())
     {
         FatalIOErrorInFunction(dict)
@@ -433,11 +548,11 @@ void readControls(const dictionary& dict, label& nSample, scalar& burnWidth)
     {
         const word& key = e.keyword();
         if (key != "FoamFile" && key != "nSample" && key != "charges"
-         && key != "burnWidth")
+         && key != "burnWidth" && key != "fills")
         {
             FatalIOErrorInFunction(dict)
                 << "Unknown entry '" << key << "'. Valid entries: nSample"
-                << " burnWidth charges" << exit(FatalIOError);
+                << " burnWidth fills charges" << exit(FatalIOError);
         }
     }
     nSample = dict.getOrDefault<label>("nSample", 8);
@@ -463,11 +578,11 @@ const equationsOfState::JWL& explosiveOf
     const dictionary& thermo
 )
 {
-    if (!mixture.twoPhase())
+    if (!mixture.multiPhase())
     {
         FatalIOErrorInFunction(thermo)
-            << "setCharge needs two materials (products first) in 'materials'"
-            << exit(FatalIOError);
+            << "setCharge needs two or three materials (products first) in"
+            << " 'materials'" << exit(FatalIOError);
     }
     const auto* jwl =
         dynamic_cast<const equationsOfState::JWL*>(&mixture.eos(0));
@@ -616,7 +731,107 @@ struct chargeFields
     volScalarField& rho2;
     volScalarField& tb;
     volScalarField& tau;
+    //- Three materials (null with two)
+    volScalarField* alpha2;
+    volScalarField* rho3;
+
+    //- Volume fractions and densities of every material in cell i
+    void get
+    (
+        const label i, const label n, FixedList<scalar, 3>& a,
+        FixedList<scalar, 3>& r
+    ) const
+    {
+        a[0] = alpha[i];
+        r[0] = rho1[i];
+        r[1] = rho2[i];
+        if (n == 3)
+        {
+            a[1] = (*alpha2)[i];
+            r[2] = (*rho3)[i];
+            a[2] = 1 - a[0] - a[1];
+        }
+        else
+        {
+            a[1] = 1 - a[0];
+        }
+    }
+
+    void set
+    (
+        const label i, const label n, const FixedList<scalar, 3>& a,
+        const FixedList<scalar, 3>& r
+    )
+    {
+        alpha[i] = a[0];
+        rho1[i] = r[0];
+        rho2[i] = r[1];
+        if (n == 3)
+        {
+            (*alpha2)[i] = a[1];
+            (*rho3)[i] = r[2];
+        }
+    }
 };
+
+
+//- Put the fraction g of material k at density rk and internal energy per
+//  unit volume rhoeK, at rest, into cell i, conserving mass and energy
+//  (any number of materials; fills, and charges with three materials).
+//  keepP: keep the cell's pressure instead (fills: the material at the
+//  ambient pressure; programmed-burn charges); rhoeK, F0 unused then
+void mixMaterial
+(
+    const label i,
+    const scalar g,
+    const label k,
+    const scalar rk,
+    const scalar rhoeK,
+    const bool keepP,
+    const blastMixture& mixture,
+    const scalar F0,
+    chargeFields& fld
+)
+{
+    const label n = mixture.size();
+    const scalar aMin = mixture.alphaMin();
+    FixedList<scalar, 3> a, r, m;
+    fld.get(i, n, a, r);
+    scalar rhoA = 0;
+    for (label j = 0; j < n; ++j)
+    {
+        rhoA += a[j]*r[j];
+    }
+    const UList<scalar> aList(a.begin(), n), rList(r.begin(), n);
+    const scalar rhoeA = keepP ? 0 : mixture.rhoeOf(aList, rList, fld.p[i], F0);
+
+    // Masses and volumes after the mixing, the others floored at aMin
+    scalar rest = 0;
+    for (label j = 0; j < n; ++j)
+    {
+        m[j] = (1 - g)*a[j]*r[j] + (j == k ? g*rk : 0);
+        if (j != k)
+        {
+            a[j] = max((1 - g)*a[j], aMin);
+            // the trace of a fully covered cell at the fill's density
+            r[j] = g < 1 ? r[j] : rk;
+            rest += a[j];
+        }
+    }
+    a[k] = 1 - rest;
+    r[k] = m[k]/a[k];
+    scalar rho = 0;
+    for (label j = 0; j < n; ++j)
+    {
+        rho += a[j]*r[j];
+    }
+    fld.set(i, n, a, r);
+    if (!keepP)
+    {
+        fld.p[i] = mixture.pOf(aList, rList, g*rhoeK + (1 - g)*rhoeA, F0);
+    }
+    fld.U[i] = (1 - g)*rhoA*fld.U[i]/rho;
+}
 
 
 //- Put the fraction f of explosive into cell i, conserving mass and, for a
@@ -636,6 +851,17 @@ void mixCell
     chargeFields& fld
 )
 {
+    if (mixture.threePhase())
+    {
+        const scalar F0 = programmedBurn::fraction(t, fld.tb[i], fld.tau[i]);
+        mixMaterial(i, f, 0, jwl.rho0(), jwl.E0(), burn, mixture, F0, fld);
+        if (burn)
+        {
+            fld.tb[i] = tbCell;
+            fld.tau[i] = tauCell;
+        }
+        return;
+    }
     const scalar rho0 = jwl.rho0(), aMin = mixture.alphaMin();
     // Ambient state of the cell
     const scalar aA = fld.alpha[i];
@@ -663,6 +889,57 @@ void mixCell
         fld.p[i] = mixture.p(a, r1, r2, rhoe, F0);
     }
     fld.U[i] = (1 - f)*rhoA*fld.U[i]/rho;
+}
+
+//- The fills, one after the other, before the charges; reports the volume
+//  of each and stops if one covers no cell
+void fillRegions
+(
+    const PtrList<chargeShape>& fills,
+    const List<fillSpec>& specs,
+    const PtrList<dictionary>& fillDicts,
+    const blastMixture& mixture,
+    const label nSample,
+    chargeFields& fld,
+    const fvMesh& mesh
+)
+{
+    const Vector<label>& solD = mesh.solutionD();
+    const pointField& pts = mesh.points();
+    PtrList<chargeShape> one(1);
+    labelList hits(1);
+    forAll(fills, c)
+    {
+        one.set(0, new chargeShape(fills[c]));
+        const label k = specs[c].material;
+        const volScalarField& rhoField =
+            k == 0 ? fld.rho1 : (k == 1 ? fld.rho2 : *fld.rho3);
+        scalar volume = 0, mass = 0;
+        forAll(mesh.V(), i)
+        {
+            const boundBox bb(pts, mesh.cellPoints()[i], false);
+            const label nTot = sampleCell(bb, solD, nSample, one, hits);
+            if (hits[0] == 0) continue;
+            const scalar g = scalar(hits[0])/nTot;
+            const scalar rk = specs[c].rho > 0 ? specs[c].rho : rhoField[i];
+            // At the cell's pressure (keepP; rhoeK, F0 unused)
+            mixMaterial(i, g, k, rk, 0, true, mixture, 1, fld);
+            volume += g*mesh.V()[i];
+            mass += g*mesh.V()[i]*rk;
+        }
+        reduce(volume, sumOp<scalar>());
+        reduce(mass, sumOp<scalar>());
+        Info<< "Fill " << c << " (" << fills[c].type() << "): "
+            << mixture.materials()[k] << ", volume " << volume << " m3, mass "
+            << mass << " kg" << endl;
+        if (!(volume > 0))
+        {
+            FatalIOErrorInFunction(fillDicts[c])
+                << "Fill " << c << " (" << fills[c].type() << ") in entry"
+                << " 'fills' covers no cell of the mesh (bounds "
+                << mesh.bounds() << ")" << exit(FatalIOError);
+        }
+    }
 }
 
 } // End anonymous namespace
@@ -722,8 +999,14 @@ int main(int argc, char *argv[])
         reportCJ(jwl, initiations, chargeDicts);
     }
 
+    PtrList<chargeShape> fills;
+    List<fillSpec> fillSpecs;
+    PtrList<dictionary> fillDicts;
+    readFills(dict, mixture, fills, fillSpecs, fillDicts);
+
     const word& m1 = mixture.materials()[0];
     const word& m2 = mixture.materials()[1];
+    const bool three = mixture.threePhase();
     auto io = [&](const word& name, const IOobject::readOption r)
     {
         return IOobject
@@ -736,6 +1019,22 @@ int main(int argc, char *argv[])
     volScalarField alpha(io("alpha." + m1, IOobject::MUST_READ), mesh);
     volScalarField rho1(io("rho." + m1, IOobject::MUST_READ), mesh);
     volScalarField rho2(io("rho." + m2, IOobject::MUST_READ), mesh);
+    autoPtr<volScalarField> alpha2, rho3;
+    if (three)
+    {
+        alpha2.reset
+        (
+            new volScalarField(io("alpha." + m2, IOobject::MUST_READ), mesh)
+        );
+        rho3.reset
+        (
+            new volScalarField
+            (
+                io("rho." + mixture.materials()[2], IOobject::MUST_READ),
+                mesh
+            )
+        );
+    }
 
     // Burn fields: those of an earlier setCharge run, else all burnt
     const bool hadBurn = programmedBurn::present(mesh);
@@ -759,8 +1058,11 @@ int main(int argc, char *argv[])
 
     chargeTally tally(charges.size());
     scalar totalMass = 0;
-    chargeFields fields{p, U, alpha, rho1, rho2, tb, tau};
+    chargeFields fields
+        {p, U, alpha, rho1, rho2, tb, tau, alpha2.get(), rho3.get()};
     labelList hits(charges.size(), label(0));
+
+    fillRegions(fills, fillSpecs, fillDicts, mixture, nSample, fields, mesh);
 
     forAll(V, celli)
     {
@@ -808,6 +1110,11 @@ int main(int argc, char *argv[])
     alpha.write();
     rho1.write();
     rho2.write();
+    if (three)
+    {
+        alpha2->write();
+        rho3->write();
+    }
     if (anyBurn || hadBurn)
     {
         tb.write();

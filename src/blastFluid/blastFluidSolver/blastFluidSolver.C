@@ -255,12 +255,17 @@ void Foam::blastFluidSolver::checkReflectivePatches() const
     // A mirror state needs conditions that mirror: the scalar fields read
     // from the case on each reflective patch
     typedef List<const volScalarField*> fieldList;
-    const fieldList fields
+    fieldList fields
     (
-        twoPhase_
+        multiPhase_
       ? fieldList({&p_, alpha1Ptr_.get(), rho1Ptr_.get(), rho2Ptr_.get()})
       : fieldList({&p_, &rho_})
     );
+    if (threePhase_)
+    {
+        fields.append(alpha2Ptr_.get());
+        fields.append(rho3Ptr_.get());
+    }
     const fvBoundaryMesh& bm = mesh_.boundary();
     forAll(bm, patchi)
     {
@@ -283,7 +288,11 @@ void Foam::blastFluidSolver::conservativeFromPrimitive()
     // density or pressure could trap in the EOS)
     checkFieldRange(p_, 0, true, GREAT, "the pressure");
 
-    if (twoPhase_)
+    if (threePhase_)
+    {
+        conservativeFromPrimitive3();
+    }
+    else if (multiPhase_)
     {
         scalarField& alpha = alpha1Ptr_->primitiveFieldRef();
         const scalarField& r1 = rho1Ptr_->primitiveField();
@@ -398,6 +407,38 @@ namespace
         r2 = max((rhoi - m1)/max(1 - a, alphaEps), rhoFloor);
     }
 
+    // Phase densities of a three-material cell: alpha1, alpha2 clipped to
+    // [0, 1] and scaled to a sum of at most 1; the partial densities
+    // clipped to [0, rho]
+    inline void phaseDensities3
+    (
+        const Foam::scalar rho, const Foam::scalar ar1,
+        const Foam::scalar ar2,
+        Foam::scalar& alpha1, Foam::scalar& alpha2,
+        Foam::scalar& r1, Foam::scalar& r2, Foam::scalar& r3
+    )
+    {
+        using Foam::min;
+        using Foam::max;
+        const Foam::scalar zero = 0, one = 1;
+        Foam::scalar a1 = min(max(alpha1, zero), one);
+        Foam::scalar a2 = min(max(alpha2, zero), one);
+        if (a1 + a2 > 1)
+        {
+            const Foam::scalar s = a1 + a2;
+            a1 /= s;
+            a2 /= s;
+        }
+        alpha1 = a1;
+        alpha2 = a2;
+        const Foam::scalar rhoi = max(rho, rhoFloor);
+        const Foam::scalar m1 = min(max(ar1, zero), rhoi);
+        const Foam::scalar m2 = min(max(ar2, zero), rhoi - m1);
+        r1 = max(m1/max(a1, alphaEps), rhoFloor);
+        r2 = max(m2/max(a2, alphaEps), rhoFloor);
+        r3 = max((rhoi - m1 - m2)/max(1 - a1 - a2, alphaEps), rhoFloor);
+    }
+
     // The sound speed from c^2 where the state is physical (else 0 and
     // false)
     inline bool soundSpeed
@@ -422,6 +463,31 @@ namespace
 }
 
 
+Foam::blastFluidSolver::phaseFields3::phaseFields3(blastFluidSolver& s)
+:
+    alpha1(s.alpha1Ptr_->primitiveFieldRef()),
+    alpha2(s.alpha2Ptr_->primitiveFieldRef()),
+    ar1(s.alphaRho1Ptr_->primitiveField()),
+    ar2(s.alphaRho2Ptr_->primitiveField()),
+    r1(s.rho1Ptr_->primitiveFieldRef()),
+    r2(s.rho2Ptr_->primitiveFieldRef()),
+    r3(s.rho3Ptr_->primitiveFieldRef())
+{}
+
+
+void Foam::blastFluidSolver::phaseFields3::phaseDensities
+(
+    const label i,
+    const scalar rho
+) const
+{
+    phaseDensities3
+    (
+        rho, ar1[i], ar2[i], alpha1[i], alpha2[i], r1[i], r2[i], r3[i]
+    );
+}
+
+
 bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
 {
     const label n = mesh_.nCells();
@@ -443,7 +509,20 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
         }
     }
 
-    if (twoPhase_)
+    if (threePhase_)
+    {
+        const phaseFields3 f(*this);
+        for (label i = 0; i < n; ++i)
+        {
+            f.phaseDensities(i, rho[i]);
+        }
+        mixture_.pc2
+        (
+            n, f.alpha1, f.alpha2, f.r1, f.r2, f.r3, rho, rhoe_, p, c_,
+            burnCells()
+        );
+    }
+    else if (multiPhase_)
     {
         scalarField& alpha = alpha1Ptr_->primitiveFieldRef();
         const scalarField& ar1 = alphaRho1Ptr_->primitiveField();
@@ -537,7 +616,28 @@ void Foam::blastFluidSolver::primitivesOfCells(const labelUList& cells)
     }
 
     const scalarField* burn = burnCells();
-    if (twoPhase_)
+    if (threePhase_)
+    {
+        const phaseFields3 f(*this);
+        forAll(cells, k)
+        {
+            const label i = cells[k];
+            f.phaseDensities(i, rho[i]);
+            g.alpha[k] = f.alpha1[i];
+            g.alpha2[k] = f.alpha2[i];
+            g.r1[k] = f.r1[i];
+            g.r2[k] = f.r2[i];
+            g.r3[k] = f.r3[i];
+            g.rho[k] = rho[i];
+            if (burn) g.burn[k] = (*burn)[i];
+        }
+        mixture_.pc2
+        (
+            m, g.alpha, g.alpha2, g.r1, g.r2, g.r3, g.rho, g.rhoe, g.p, g.c2,
+            burn ? &g.burn : nullptr
+        );
+    }
+    else if (multiPhase_)
     {
         scalarField& alpha = alpha1Ptr_->primitiveFieldRef();
         const scalarField& ar1 = alphaRho1Ptr_->primitiveField();
@@ -593,11 +693,16 @@ void Foam::blastFluidSolver::correctPrimitiveBoundaries()
 {
     p_.correctBoundaryConditions();
     U_.correctBoundaryConditions();
-    if (twoPhase_)
+    if (multiPhase_)
     {
         alpha1Ptr_->correctBoundaryConditions();
         rho1Ptr_->correctBoundaryConditions();
         rho2Ptr_->correctBoundaryConditions();
+        if (threePhase_)
+        {
+            alpha2Ptr_->correctBoundaryConditions();
+            rho3Ptr_->correctBoundaryConditions();
+        }
     }
     else
     {
@@ -742,11 +847,16 @@ void Foam::blastFluidSolver::faceStates()
     const blastLimiter& limiter = limiter_();
     if (limiter.secondOrder())
     {
-        if (twoPhase_)
+        if (multiPhase_)
         {
             gaussGrad(alpha1Ptr_(), gradAlpha_());
             gaussGrad(rho1Ptr_(), gradRho1_());
             gaussGrad(rho2Ptr_(), gradRho2_());
+            if (threePhase_)
+            {
+                gaussGrad(alpha2Ptr_(), gradAlpha2_());
+                gaussGrad(rho3Ptr_(), gradRho3_());
+            }
         }
         else
         {
@@ -757,13 +867,25 @@ void Foam::blastFluidSolver::faceStates()
     }
 
     const bool lo = anyLowOrder_;
-    if (twoPhase_)
+    if (threePhase_)
+    {
+        limiter.jointFaceValues
+        (
+            addr_, alpha1Ptr_(), gradAlpha_(), alpha2Ptr_(), gradAlpha2_(),
+            lowOrder_, lo, faces_.alphaL, faces_.alphaR, faces_.alpha2L,
+            faces_.alpha2R
+        );
+    }
+    else if (multiPhase_)
     {
         limiter.faceValues
         (
             addr_, alpha1Ptr_(), gradAlpha_(), lowOrder_, lo,
             faces_.alphaL, faces_.alphaR
         );
+    }
+    if (multiPhase_)
+    {
         limiter.faceValues
         (
             addr_, rho1Ptr_(), gradRho1_(), lowOrder_, lo, rho1L_, rho1R_
@@ -772,6 +894,13 @@ void Foam::blastFluidSolver::faceStates()
         (
             addr_, rho2Ptr_(), gradRho2_(), lowOrder_, lo, rho2L_, rho2R_
         );
+        if (threePhase_)
+        {
+            limiter.faceValues
+            (
+                addr_, rho3Ptr_(), gradRho3_(), lowOrder_, lo, rho3L_, rho3R_
+            );
+        }
     }
     else
     {
@@ -796,7 +925,11 @@ void Foam::blastFluidSolver::faceThermo()
     blastFaceStates& s = faces_;
     const label n = addr_.nFaces();
 
-    if (twoPhase_)
+    if (threePhase_)
+    {
+        faceThermo3();
+    }
+    else if (multiPhase_)
     {
         for (label f = 0; f < n; ++f)
         {
@@ -848,7 +981,7 @@ void Foam::blastFluidSolver::faceThermo()
 
 void Foam::blastFluidSolver::computeFluxes()
 {
-    flux_->fluxes(0, addr_.nInternal(), addr_.Sf(), addr_.magSf(), faces_, twoPhase_, F_);
+    flux_->fluxes(0, addr_.nInternal(), addr_.Sf(), addr_.magSf(), faces_, nTracked(), F_);
 
     forAll(addr_.kinds(), patchi)
     {
@@ -870,18 +1003,14 @@ void Foam::blastFluidSolver::computeFluxes()
                 F_.rhoU[cf] = faces_.pL[cf]*addr_.Sf()[cf];
                 F_.rhoE[cf] = 0;
                 F_.uS[cf] = 0;
-                if (twoPhase_)
-                {
-                    F_.rhoY1[cf] = 0;
-                    F_.alpha[cf] = 0;
-                }
+                zeroMaterialFluxes(cf);
             }
         }
         else if (addr_.kinds()[patchi] != blastFaceAddressing::REFLECTIVE)
         {
             flux_->fluxes
             (
-                start, start + size, addr_.Sf(), addr_.magSf(), faces_, twoPhase_, F_
+                start, start + size, addr_.Sf(), addr_.magSf(), faces_, nTracked(), F_
             );
         }
         else
@@ -902,11 +1031,7 @@ void Foam::blastFluidSolver::computeFluxes()
                 F_.rhoU[cf] = pStar*addr_.Sf()[cf];
                 F_.rhoE[cf] = 0;
                 F_.uS[cf] = 0;
-                if (twoPhase_)
-                {
-                    F_.rhoY1[cf] = 0;
-                    F_.alpha[cf] = 0;
-                }
+                zeroMaterialFluxes(cf);
             }
         }
     }
@@ -1016,13 +1141,18 @@ void Foam::blastFluidSolver::assembleResidual()
     residual_.rho = 0;
     residual_.rhoU = Zero;
     residual_.rhoE = 0;
-    if (twoPhase_)
+    if (multiPhase_)
     {
         residual_.alpha = 0;
         residual_.alphaRho1 = 0;
     }
+    if (threePhase_)
+    {
+        residual_.alpha2 = 0;
+        residual_.alphaRho2 = 0;
+    }
     const scalarField* alphaPtr =
-        twoPhase_ ? &alpha1Ptr_->primitiveField() : nullptr;
+        multiPhase_ ? &alpha1Ptr_->primitiveField() : nullptr;
 
     for (label f = 0; f < addr_.nInternal(); ++f)
     {
@@ -1042,7 +1172,7 @@ void Foam::blastFluidSolver::assembleResidual()
         residual_.rhoE[P] -= F_.rhoE[cf];
     }
 
-    if (twoPhase_)
+    if (multiPhase_)
     {
         const scalarField& alpha = *alphaPtr;
         for (label f = 0; f < addr_.nInternal(); ++f)
@@ -1061,6 +1191,14 @@ void Foam::blastFluidSolver::assembleResidual()
             residual_.alpha[P] -= F_.alpha[cf] - alpha[P]*F_.uS[cf];
         }
     }
+    if (threePhase_)
+    {
+        addMaterialResidual
+        (
+            F_.rhoY2, F_.alpha2, alpha2Ptr_->primitiveField(),
+            residual_.alphaRho2, residual_.alpha2
+        );
+    }
 
     const scalarField& V = mesh_.V();
     forAll(V, i)
@@ -1070,12 +1208,20 @@ void Foam::blastFluidSolver::assembleResidual()
         residual_.rhoU[i] *= rV;
         residual_.rhoE[i] *= rV;
     }
-    if (twoPhase_)
+    if (multiPhase_)
     {
         forAll(V, i)
         {
             residual_.alpha[i] /= V[i];
             residual_.alphaRho1[i] /= V[i];
+        }
+    }
+    if (threePhase_)
+    {
+        forAll(V, i)
+        {
+            residual_.alpha2[i] /= V[i];
+            residual_.alphaRho2[i] /= V[i];
         }
     }
 }
@@ -1141,22 +1287,221 @@ bool Foam::blastFluidSolver::stage(const label s, const scalar dt)
     rk.combine(s, dt, start_.rho, rho_.primitiveFieldRef(), residual_.rho);
     rk.combine(s, dt, start_.rhoU, rhoU_.primitiveFieldRef(), residual_.rhoU);
     rk.combine(s, dt, start_.rhoE, rhoE_.primitiveFieldRef(), residual_.rhoE);
-    if (twoPhase_)
+    if (multiPhase_)
     {
-        scalarField& alpha = alpha1Ptr_->primitiveFieldRef();
-        rk.combine(s, dt, start_.alpha, alpha, residual_.alpha);
-        forAll(alpha, i)
-        {
-            alpha[i] = min(max(alpha[i], scalar(0)), scalar(1));
-        }
-        rk.combine
+        combineTracked
         (
-            s, dt, start_.alphaRho1, alphaRho1Ptr_->primitiveFieldRef(),
-            residual_.alphaRho1
+            s, dt, start_.alpha, alpha1Ptr_(), residual_.alpha,
+            start_.alphaRho1, alphaRho1Ptr_(), residual_.alphaRho1
+        );
+    }
+    if (threePhase_)
+    {
+        combineTracked
+        (
+            s, dt, start_.alpha2, alpha2Ptr_(), residual_.alpha2,
+            start_.alphaRho2, alphaRho2Ptr_(), residual_.alphaRho2
         );
     }
     primitivesCurrent_ = false;
     return true;
+}
+
+
+Foam::volScalarField* Foam::blastFluidSolver::readPrimitive
+(
+    const word& name
+) const
+{
+    return new volScalarField
+    (
+        caseChecks::fieldIO(name, mesh_, IOobject::MUST_READ),
+        mesh_
+    );
+}
+
+
+Foam::volScalarField* Foam::blastFluidSolver::readPartialDensity
+(
+    const word& material,
+    const bool restart
+) const
+{
+    volScalarField* f = new volScalarField
+    (
+        caseChecks::fieldIO
+        (
+            "alphaRho." + material, mesh_, IOobject::READ_IF_PRESENT
+        ),
+        mesh_,
+        dimensionedScalar(dimDensity, Zero),
+        "calculated"
+    );
+    if (restart && !f->headerOk())
+    {
+        FatalErrorInFunction
+            << "Restart from time " << mesh_.time().timeName()
+            << ": rhoE present but alphaRho." << material << " missing (no"
+            << " file " << f->objectPath() << " with a valid"
+            << " FoamFile header)" << exit(FatalError);
+    }
+    return f;
+}
+
+
+void Foam::blastFluidSolver::conservativeFromPrimitive3()
+{
+    const label n = mesh_.nCells();
+    scalarField& rho = rho_.primitiveFieldRef();
+    const scalarField& p = p_.primitiveField();
+    scalarField& alpha1 = alpha1Ptr_->primitiveFieldRef();
+    scalarField& alpha2 = alpha2Ptr_->primitiveFieldRef();
+    const scalarField& r1 = rho1Ptr_->primitiveField();
+    const scalarField& r2 = rho2Ptr_->primitiveField();
+    const scalarField& r3 = rho3Ptr_->primitiveField();
+    checkFieldRange(alpha1Ptr_(), 0, false, 1, "a volume fraction");
+    checkFieldRange(alpha2Ptr_(), 0, false, 1, "a volume fraction");
+    checkFieldRange(rho1Ptr_(), 0, true, GREAT, "a phase density");
+    checkFieldRange(rho2Ptr_(), 0, true, GREAT, "a phase density");
+    checkFieldRange(rho3Ptr_(), 0, true, GREAT, "a phase density");
+    for (label i = 0; i < n; ++i)
+    {
+        if (alpha1[i] + alpha2[i] > 1 + 1e-12)
+        {
+            FatalIOError
+            (
+                FUNCTION_NAME, __FILE__, __LINE__,
+                alpha2Ptr_->objectPath(), -1, -1
+            )
+                << "entry 'internalField' of " << alpha1Ptr_->objectPath()
+                << " and " << alpha2Ptr_->objectPath() << ": alpha."
+                << mixture_.materials()[0] << " + alpha."
+                << mixture_.materials()[1] << " = "
+                << alpha1[i] + alpha2[i] << " > 1 in cell " << i
+                << " (centre " << mesh_.C()[i] << ")" << exit(FatalIOError);
+        }
+    }
+    scalarField& ar1 = alphaRho1Ptr_->primitiveFieldRef();
+    scalarField& ar2 = alphaRho2Ptr_->primitiveFieldRef();
+    for (label i = 0; i < n; ++i)
+    {
+        ar1[i] = alpha1[i]*r1[i];
+        ar2[i] = alpha2[i]*r2[i];
+        rho[i] = ar1[i] + ar2[i] + max(1 - alpha1[i] - alpha2[i], 0.0)*r3[i];
+    }
+    mixture_.rhoeC2
+    (
+        n, alpha1, alpha2, r1, r2, r3, rho, p, rhoe_, c_, burnCells()
+    );
+}
+
+
+void Foam::blastFluidSolver::faceThermo3()
+{
+    blastFaceStates& s = faces_;
+    const label n = addr_.nFaces();
+    // The limiter bounds alpha1 and alpha2 on a face each by its
+    // neighbours, not their sum: scale a sum above 1 back to 1, so that
+    // the updated cells stay in alpha1 + alpha2 <= 1 (a convex combination
+    // of cell and face values) and never need a clip that would change the
+    // volume fractions without the energy (uniform p lost at a contact)
+    for (label f = 0; f < n; ++f)
+    {
+        const scalar sL = s.alphaL[f] + s.alpha2L[f];
+        if (sL > 1)
+        {
+            s.alphaL[f] /= sL;
+            s.alpha2L[f] /= sL;
+        }
+        const scalar sR = s.alphaR[f] + s.alpha2R[f];
+        if (sR > 1)
+        {
+            s.alphaR[f] /= sR;
+            s.alpha2R[f] /= sR;
+        }
+    }
+    for (label f = 0; f < n; ++f)
+    {
+        const scalar aL = s.alphaL[f], aR = s.alphaR[f];
+        const scalar bL = s.alpha2L[f], bR = s.alpha2R[f];
+        const scalar m1L = aL*rho1L_[f], m1R = aR*rho1R_[f];
+        const scalar m2L = bL*rho2L_[f], m2R = bR*rho2R_[f];
+        s.rhoL[f] = m1L + m2L + (1 - aL - bL)*rho3L_[f];
+        s.rhoR[f] = m1R + m2R + (1 - aR - bR)*rho3R_[f];
+        s.Y1L[f] = m1L/s.rhoL[f];
+        s.Y1R[f] = m1R/s.rhoR[f];
+        s.Y2L[f] = m2L/s.rhoL[f];
+        s.Y2R[f] = m2R/s.rhoR[f];
+    }
+    mixture_.rhoeC2
+    (
+        n, s.alphaL, s.alpha2L, rho1L_, rho2L_, rho3L_, s.rhoL, s.pL,
+        workE_, workC2_, burn_.valid() ? &burnL_ : nullptr
+    );
+    for (label f = 0; f < n; ++f)
+    {
+        s.EL[f] = workE_[f] + 0.5*s.rhoL[f]*magSqr(s.UL[f]);
+        s.cL[f] = sqrt(max(workC2_[f], scalar(0)));
+    }
+    mixture_.rhoeC2
+    (
+        n, s.alphaR, s.alpha2R, rho1R_, rho2R_, rho3R_, s.rhoR, s.pR,
+        workE_, workC2_, burn_.valid() ? &burnR_ : nullptr
+    );
+    for (label f = 0; f < n; ++f)
+    {
+        s.ER[f] = workE_[f] + 0.5*s.rhoR[f]*magSqr(s.UR[f]);
+        s.cR[f] = sqrt(max(workC2_[f], scalar(0)));
+    }
+}
+
+
+void Foam::blastFluidSolver::combineTracked
+(
+    const label s,
+    const scalar dt,
+    const scalarField& alpha0,
+    volScalarField& alphaField,
+    const scalarField& Ralpha,
+    const scalarField& m0,
+    volScalarField& mField,
+    const scalarField& Rm
+) const
+{
+    const blastTimeIntegrator& rk = rk_();
+    scalarField& alpha = alphaField.primitiveFieldRef();
+    rk.combine(s, dt, alpha0, alpha, Ralpha);
+    forAll(alpha, i)
+    {
+        alpha[i] = min(max(alpha[i], scalar(0)), scalar(1));
+    }
+    rk.combine(s, dt, m0, mField.primitiveFieldRef(), Rm);
+}
+
+
+void Foam::blastFluidSolver::addMaterialResidual
+(
+    const scalarField& Fm,
+    const scalarField& Fa,
+    const scalarField& alpha,
+    scalarField& Rm,
+    scalarField& Ra
+) const
+{
+    for (label f = 0; f < addr_.nInternal(); ++f)
+    {
+        const label P = addr_.own()[f], N = addr_.nei()[f];
+        Rm[P] -= Fm[f];
+        Rm[N] += Fm[f];
+        Ra[P] -= Fa[f] - alpha[P]*F_.uS[f];
+        Ra[N] += Fa[f] - alpha[N]*F_.uS[f];
+    }
+    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
+    {
+        const label P = addr_.own()[cf];
+        Rm[P] -= Fm[cf];
+        Ra[P] -= Fa[cf] - alpha[P]*F_.uS[cf];
+    }
 }
 
 
@@ -1189,7 +1534,8 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
         dictionary()
     ),
     mixture_(thermoDict_),
-    twoPhase_(mixture_.twoPhase()),
+    multiPhase_(mixture_.multiPhase()),
+    threePhase_(mixture_.threePhase()),
     flux_(fluxScheme::New(fluidDict_)),
     QActive_(false),
     CQ_(1.5),
@@ -1276,7 +1622,7 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
         IOobject("rhoE", mesh.time().timeName(), mesh, IOobject::MUST_READ)
        .typeHeaderOk<volScalarField>(true);
 
-    if (twoPhase_)
+    if (multiPhase_)
     {
         const word& m1 = mixture_.materials()[0];
         const word& m2 = mixture_.materials()[1];
@@ -1298,54 +1644,15 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
                 << " materials in the order of the fields (" << m2 << ' '
                 << m1 << ")" << exit(FatalError);
         }
-        alpha1Ptr_.reset
-        (
-            new volScalarField
-            (
-                caseChecks::fieldIO("alpha." + m1, mesh, IOobject::MUST_READ),
-                mesh
-            )
-        );
-        rho1Ptr_.reset
-        (
-            new volScalarField
-            (
-                caseChecks::fieldIO("rho." + m1, mesh, IOobject::MUST_READ),
-                mesh
-            )
-        );
-        rho2Ptr_.reset
-        (
-            new volScalarField
-            (
-                caseChecks::fieldIO("rho." + m2, mesh, IOobject::MUST_READ),
-                mesh
-            )
-        );
-        alphaRho1Ptr_.reset
-        (
-            new volScalarField
-            (
-                caseChecks::fieldIO
-                (
-                    "alphaRho." + m1, mesh, IOobject::READ_IF_PRESENT
-                ),
-                mesh,
-                dimensionedScalar(dimDensity, Zero),
-                "calculated"
-            )
-        );
-        if
-        (
-            restart
-         && !alphaRho1Ptr_->headerOk()
-        )
+        alpha1Ptr_.reset(readPrimitive("alpha." + m1));
+        rho1Ptr_.reset(readPrimitive("rho." + m1));
+        rho2Ptr_.reset(readPrimitive("rho." + m2));
+        alphaRho1Ptr_.reset(readPartialDensity(m1, restart));
+        if (threePhase_)
         {
-            FatalErrorInFunction
-                << "Restart from time " << mesh.time().timeName()
-                << ": rhoE present but alphaRho." << m1 << " missing (no"
-                << " file " << alphaRho1Ptr_->objectPath() << " with a valid"
-                << " FoamFile header)" << exit(FatalError);
+            alpha2Ptr_.reset(readPrimitive("alpha." + m2));
+            rho3Ptr_.reset(readPrimitive("rho." + mixture_.materials()[2]));
+            alphaRho2Ptr_.reset(readPartialDensity(m2, restart));
         }
     }
     else if (!rho_.headerOk())
@@ -1378,11 +1685,16 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
             "zeroGradient"
         );
     };
-    if (twoPhase_)
+    if (multiPhase_)
     {
         gradAlpha_.reset(makeGradS("gradAlpha"));
         gradRho1_.reset(makeGradS("gradRho1"));
         gradRho2_.reset(makeGradS("gradRho2"));
+        if (threePhase_)
+        {
+            gradAlpha2_.reset(makeGradS("gradAlpha2"));
+            gradRho3_.reset(makeGradS("gradRho3"));
+        }
     }
     else
     {
@@ -1402,23 +1714,29 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
 
     checkReflectivePatches();
 
-    faces_.setSize(addr_.nFaces(), twoPhase_);
-    F_.setSize(addr_.nFaces(), twoPhase_);
+    faces_.setSize(addr_.nFaces(), nTracked());
+    F_.setSize(addr_.nFaces(), nTracked());
     workE_.setSize(addr_.nFaces(), 0);
     workC2_.setSize(addr_.nFaces(), 0);
-    if (twoPhase_)
+    if (multiPhase_)
     {
         rho1L_.setSize(addr_.nFaces(), 1); rho1R_.setSize(addr_.nFaces(), 1);
         rho2L_.setSize(addr_.nFaces(), 1); rho2R_.setSize(addr_.nFaces(), 1);
         start_.alpha.setSize(nCells); start_.alphaRho1.setSize(nCells);
         residual_.alpha.setSize(nCells); residual_.alphaRho1.setSize(nCells);
     }
+    if (threePhase_)
+    {
+        rho3L_.setSize(addr_.nFaces(), 1); rho3R_.setSize(addr_.nFaces(), 1);
+        start_.alpha2.setSize(nCells); start_.alphaRho2.setSize(nCells);
+        residual_.alpha2.setSize(nCells); residual_.alphaRho2.setSize(nCells);
+    }
     start_.rho.setSize(nCells); start_.rhoU.setSize(nCells); start_.rhoE.setSize(nCells);
     residual_.rho.setSize(nCells); residual_.rhoU.setSize(nCells); residual_.rhoE.setSize(nCells);
 
     if (programmedBurn::present(mesh))
     {
-        if (!twoPhase_ || !mixture_.canBurn())
+        if (!multiPhase_ || !mixture_.canBurn())
         {
             FatalIOErrorInFunction(thermoDict_)
                 << "time " << mesh.time().timeName() << " has a lightingTime"
@@ -1437,12 +1755,18 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     caseChecks::checkDimensions(rho_, dimDensity);
     caseChecks::checkDimensions(rhoU_, dimDensity*dimVelocity);
     caseChecks::checkDimensions(rhoE_, dimEnergy/dimVolume);
-    if (twoPhase_)
+    if (multiPhase_)
     {
         caseChecks::checkDimensions(alpha1Ptr_(), dimless);
         caseChecks::checkDimensions(rho1Ptr_(), dimDensity);
         caseChecks::checkDimensions(rho2Ptr_(), dimDensity);
         caseChecks::checkDimensions(alphaRho1Ptr_(), dimDensity);
+    }
+    if (threePhase_)
+    {
+        caseChecks::checkDimensions(alpha2Ptr_(), dimless);
+        caseChecks::checkDimensions(rho3Ptr_(), dimDensity);
+        caseChecks::checkDimensions(alphaRho2Ptr_(), dimDensity);
     }
 
     if (restart)
@@ -1453,9 +1777,13 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     }
     else
     {
-        if (twoPhase_)
+        if (multiPhase_)
         {
             alpha1Ptr_->correctBoundaryConditions();
+        }
+        if (threePhase_)
+        {
+            alpha2Ptr_->correctBoundaryConditions();
         }
         conservativeFromPrimitive();
     }
@@ -1508,10 +1836,15 @@ void Foam::blastFluidSolver::prepareRetry
     rho_.primitiveFieldRef() = start_.rho;
     rhoU_.primitiveFieldRef() = start_.rhoU;
     rhoE_.primitiveFieldRef() = start_.rhoE;
-    if (twoPhase_)
+    if (multiPhase_)
     {
         alpha1Ptr_->primitiveFieldRef() = start_.alpha;
         alphaRho1Ptr_->primitiveFieldRef() = start_.alphaRho1;
+    }
+    if (threePhase_)
+    {
+        alpha2Ptr_->primitiveFieldRef() = start_.alpha2;
+        alphaRho2Ptr_->primitiveFieldRef() = start_.alphaRho2;
     }
     if (attempt + 2 < maxAttempts)
     {
@@ -1545,10 +1878,15 @@ void Foam::blastFluidSolver::advance(const scalar dt)
     start_.rho = rho_.primitiveField();
     start_.rhoU = rhoU_.primitiveField();
     start_.rhoE = rhoE_.primitiveField();
-    if (twoPhase_)
+    if (multiPhase_)
     {
         start_.alpha = alpha1Ptr_->primitiveField();
         start_.alphaRho1 = alphaRho1Ptr_->primitiveField();
+    }
+    if (threePhase_)
+    {
+        start_.alpha2 = alpha2Ptr_->primitiveField();
+        start_.alphaRho2 = alphaRho2Ptr_->primitiveField();
     }
 
     lowOrder_.primitiveFieldRef() = 0;

@@ -91,13 +91,21 @@ void Foam::blastFluidSolver::scaleFluxes(const scalarField& phif)
         F_.rhoU[f] *= phif[f];
         F_.rhoE[f] *= phif[f];
     }
-    if (twoPhase_)
+    if (multiPhase_)
     {
         for (label f = 0; f < addr_.nFaces(); ++f)
         {
             F_.rhoY1[f] *= phif[f];
             F_.alpha[f] *= phif[f];
             F_.uS[f] *= phif[f];
+        }
+    }
+    if (threePhase_)
+    {
+        for (label f = 0; f < addr_.nFaces(); ++f)
+        {
+            F_.rhoY2[f] *= phif[f];
+            F_.alpha2[f] *= phif[f];
         }
     }
 }
@@ -151,10 +159,14 @@ bool Foam::blastFluidSolver::readFluidFraction()
 void Foam::blastFluidSolver::contentFromState
 (
     const scalarField& phi,
-    scalarField& cRho, vectorField& cRhoU, scalarField& cRhoE,
-    scalarField& cAlpha, scalarField& cAlphaRho1
+    conservedFields& c
 ) const
 {
+    scalarField& cRho = c.rho;
+    vectorField& cRhoU = c.rhoU;
+    scalarField& cRhoE = c.rhoE;
+    scalarField& cAlpha = c.alpha;
+    scalarField& cAlphaRho1 = c.alphaRho1;
     // Element by element into lists sized once (no temporaries per stage)
     const label n = phi.size();
     cRho.setSize(n);
@@ -169,7 +181,7 @@ void Foam::blastFluidSolver::contentFromState
         cRhoU[i] = rhoU[i]*phi[i];
         cRhoE[i] = rhoE[i]*phi[i];
     }
-    if (twoPhase_)
+    if (multiPhase_)
     {
         cAlpha.setSize(n);
         cAlphaRho1.setSize(n);
@@ -181,25 +193,44 @@ void Foam::blastFluidSolver::contentFromState
             cAlphaRho1[i] = ar1[i]*phi[i];
         }
     }
+    if (threePhase_)
+    {
+        c.alpha2.setSize(n);
+        c.alphaRho2.setSize(n);
+        const scalarField& alpha2 = alpha2Ptr_->primitiveField();
+        const scalarField& ar2 = alphaRho2Ptr_->primitiveField();
+        for (label i = 0; i < n; ++i)
+        {
+            c.alpha2[i] = alpha2[i]*phi[i];
+            c.alphaRho2[i] = ar2[i]*phi[i];
+        }
+    }
 }
 
 
 void Foam::blastFluidSolver::stateFromContent
 (
     const scalarField& phi,
-    const scalarField& cRho, const vectorField& cRhoU,
-    const scalarField& cRhoE, const scalarField& cAlpha,
-    const scalarField& cAlphaRho1,
+    const conservedFields& c,
     DynamicList<label>* changed
 )
 {
+    const scalarField& cRho = c.rho;
+    const vectorField& cRhoU = c.rhoU;
+    const scalarField& cRhoE = c.rhoE;
+    const scalarField& cAlpha = c.alpha;
+    const scalarField& cAlphaRho1 = c.alphaRho1;
+    scalarField* alpha2 =
+        threePhase_ ? &alpha2Ptr_->primitiveFieldRef() : nullptr;
+    scalarField* ar2 =
+        threePhase_ ? &alphaRho2Ptr_->primitiveFieldRef() : nullptr;
     scalarField& rho = rho_.primitiveFieldRef();
     vectorField& rhoU = rhoU_.primitiveFieldRef();
     scalarField& rhoE = rhoE_.primitiveFieldRef();
     scalarField* alpha =
-        twoPhase_ ? &alpha1Ptr_->primitiveFieldRef() : nullptr;
+        multiPhase_ ? &alpha1Ptr_->primitiveFieldRef() : nullptr;
     scalarField* ar1 =
-        twoPhase_ ? &alphaRho1Ptr_->primitiveFieldRef() : nullptr;
+        multiPhase_ ? &alphaRho1Ptr_->primitiveFieldRef() : nullptr;
     if (changed) changed->clear();
     forAll(phi, i)
     {
@@ -222,6 +253,15 @@ void Foam::blastFluidSolver::stateFromContent
             (*alpha)[i] = a;
             (*ar1)[i] = m1;
         }
+        if (alpha2)
+        {
+            const scalar a2 =
+                min(max(c.alpha2[i]/phi[i], scalar(0)), scalar(1));
+            const scalar m2 = c.alphaRho2[i]/phi[i];
+            differs = differs || a2 != (*alpha2)[i] || m2 != (*ar2)[i];
+            (*alpha2)[i] = a2;
+            (*ar2)[i] = m2;
+        }
         // (a NaN differs from itself: it is listed, and stops the run)
         if (changed && differs) changed->append(i);
     }
@@ -232,8 +272,7 @@ void Foam::blastFluidSolver::stateFromContent
 void Foam::blastFluidSolver::redistribute
 (
     const volScalarField& phiField,
-    scalarField& cRho, vectorField& cRhoU, scalarField& cRhoE,
-    scalarField& cAlpha, scalarField& cAlphaRho1,
+    conservedFields& c,
     const boolList* force,
     const bool forcedOnly
 )
@@ -244,7 +283,7 @@ void Foam::blastFluidSolver::redistribute
     }
     redistributePass
     (
-        phiField, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1, force, forcedOnly
+        phiField, c, force, forcedOnly
     );
     const label maxExtraPasses = 3;
     for (label pass = 0; pass <= maxExtraPasses; ++pass)
@@ -271,8 +310,7 @@ void Foam::blastFluidSolver::redistribute
         }
         redistributePass
         (
-            phiField, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1,
-            &srd_->extra, true
+            phiField, c, &srd_->extra, true
         );
         closedLinks_ = false;
     }
@@ -325,14 +363,18 @@ bool Foam::blastFluidSolver::markDeficientNeighbourhoods
 void Foam::blastFluidSolver::redistributePass
 (
     const volScalarField& phiField,
-    scalarField& cRho, vectorField& cRhoU, scalarField& cRhoE,
-    scalarField& cAlpha, scalarField& cAlphaRho1,
+    conservedFields& c,
     const boolList* force,
     const bool forcedOnly
 )
 {
     cutCellFields& w = srd_();
     const scalarField& phi = phiField.primitiveField();
+    scalarField& cRho = c.rho;
+    vectorField& cRhoU = c.rhoU;
+    scalarField& cRhoE = c.rhoE;
+    scalarField& cAlpha = c.alpha;
+    scalarField& cAlphaRho1 = c.alphaRho1;
 
     // Small cells: less than half open or closing with gas in them, and
     // the cells in 'force' (new ones); with forcedOnly those only
@@ -358,8 +400,9 @@ void Foam::blastFluidSolver::redistributePass
         return;
     }
 
-    // The content components: mass, momentum, energy (material 1)
-    const label nComp = twoPhase_ ? 7 : 5;
+    // The content components: mass, momentum, energy (material 1, and
+    // material 2 of three)
+    const label nComp = threePhase_ ? 9 : multiPhase_ ? 7 : 5;
     auto component = [&](const label k, const label i) -> scalar&
     {
         switch (k)
@@ -370,7 +413,9 @@ void Foam::blastFluidSolver::redistributePass
             case 3: return cRhoU[i].z();
             case 4: return cRhoE[i];
             case 5: return cAlphaRho1[i];
-            default: return cAlpha[i];
+            case 6: return cAlpha[i];
+            case 7: return c.alphaRho2[i];
+            default: return c.alpha2[i];
         }
     };
 
@@ -625,7 +670,7 @@ void Foam::blastFluidSolver::fillEmptyCells()
     coupledNeighbourValues(rhoU_, rhoUB);
     coupledNeighbourValues(rhoE_, rhoEB);
     coupledNeighbourValues(fluidFractionPtr_(), phiB);
-    if (twoPhase_)
+    if (multiPhase_)
     {
         alpha1Ptr_->correctBoundaryConditions();
         alphaRho1Ptr_->correctBoundaryConditions();
@@ -647,9 +692,9 @@ void Foam::blastFluidSolver::fillEmptyCells()
         a[i] += wt*aa; ar[i] += wt*arr;
     };
     const scalarField& alpha =
-        twoPhase_ ? alpha1Ptr_->primitiveField() : rho_.primitiveField();
+        multiPhase_ ? alpha1Ptr_->primitiveField() : rho_.primitiveField();
     const scalarField& ar1 =
-        twoPhase_ ? alphaRho1Ptr_->primitiveField() : rho_.primitiveField();
+        multiPhase_ ? alphaRho1Ptr_->primitiveField() : rho_.primitiveField();
     for (label f = 0; f < addr_.nInternal(); ++f)
     {
         if (aperture_[f] <= 0) continue;
@@ -671,14 +716,14 @@ void Foam::blastFluidSolver::fillEmptyCells()
             add
             (
                 P, phiB[b], rhoB[b], rhoUB[b], rhoEB[b],
-                twoPhase_ ? alphaB[b] : 0, twoPhase_ ? ar1B[b] : 0
+                multiPhase_ ? alphaB[b] : 0, multiPhase_ ? ar1B[b] : 0
             );
         }
     }
     scalarField& alphaRef =
-        twoPhase_ ? alpha1Ptr_->primitiveFieldRef() : w;
+        multiPhase_ ? alpha1Ptr_->primitiveFieldRef() : w;
     scalarField& ar1Ref =
-        twoPhase_ ? alphaRho1Ptr_->primitiveFieldRef() : w;
+        multiPhase_ ? alphaRho1Ptr_->primitiveFieldRef() : w;
     for (label i = 0; i < nCells; ++i)
     {
         if (phi[i] > 0 || w[i] <= 0) continue;
@@ -686,13 +731,59 @@ void Foam::blastFluidSolver::fillEmptyCells()
         rho_[i] = s*r[i];
         rhoU_[i] = s*m[i];
         rhoE_[i] = s*e[i];
-        if (twoPhase_)
+        if (multiPhase_)
         {
             alphaRef[i] = s*a[i];
             ar1Ref[i] = s*ar[i];
         }
     }
+    if (threePhase_)
+    {
+        fillEmptyCellsField(alpha2Ptr_());
+        fillEmptyCellsField(alphaRho2Ptr_());
+    }
     primitivesCurrent_ = false;
+}
+
+
+void Foam::blastFluidSolver::fillEmptyCellsField(volScalarField& fld)
+{
+    // fillEmptyCells for one more field: the mean of the open neighbours
+    // with gas weighted by their fluid fractions
+    const scalarField& phi = fluidFractionPtr_->primitiveField();
+    fld.correctBoundaryConditions();
+    scalarField nbr, phiB;
+    coupledNeighbourValues(fld, nbr);
+    coupledNeighbourValues(fluidFractionPtr_(), phiB);
+    scalarField& v = fld.primitiveFieldRef();
+    const label nCells = mesh_.nCells();
+    scalarField w(nCells, 0), sum(nCells, 0);
+    for (label f = 0; f < addr_.nInternal(); ++f)
+    {
+        if (aperture_[f] <= 0) continue;
+        const label P = addr_.own()[f], N = addr_.nei()[f];
+        if (phi[P] <= 0 && phi[N] > 0)
+        {
+            w[P] += phi[N]; sum[P] += phi[N]*v[N];
+        }
+        if (phi[N] <= 0 && phi[P] > 0)
+        {
+            w[N] += phi[P]; sum[N] += phi[P]*v[P];
+        }
+    }
+    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
+    {
+        const label b = cf - addr_.nInternal(), P = addr_.own()[cf];
+        if (aperture_[cf] > 0 && phi[P] <= 0 && phiB.size() && phiB[b] > 0)
+        {
+            w[P] += phiB[b]; sum[P] += phiB[b]*nbr[b];
+        }
+    }
+    for (label i = 0; i < nCells; ++i)
+    {
+        if (phi[i] > 0 || w[i] <= 0) continue;
+        v[i] = sum[i]/w[i];
+    }
 }
 
 
@@ -744,12 +835,20 @@ void Foam::blastFluidSolver::addWallTerms(const label s, const scalar dt)
         wallWork_[i] += b*theta*work;
         wallPressureImpulse_[i] += b*dt*pw;
     }
-    if (twoPhase_)
+    if (multiPhase_)
     {
         const scalarField& alpha = alpha1Ptr_->primitiveField();
         forAll(V, i)
         {
             residual_.alpha[i] += alpha[i]*sweptVolume_[i]/(dt*V[i]);
+        }
+    }
+    if (threePhase_)
+    {
+        const scalarField& alpha2 = alpha2Ptr_->primitiveField();
+        forAll(V, i)
+        {
+            residual_.alpha2[i] += alpha2[i]*sweptVolume_[i]/(dt*V[i]);
         }
     }
 }
@@ -758,10 +857,12 @@ void Foam::blastFluidSolver::addWallTerms(const label s, const scalar dt)
 void Foam::blastFluidSolver::mergeBadCells
 (
     const volScalarField& phiField,
-    scalarField& cRho, vectorField& cRhoU, scalarField& cRhoE,
-    scalarField& cAlpha, scalarField& cAlphaRho1
+    conservedFields& c
 )
 {
+    const scalarField& cRho = c.rho;
+    const vectorField& cRhoU = c.rhoU;
+    const scalarField& cRhoE = c.rhoE;
     // A gas content without positive mass or internal energy (a small
     // cell whose neighbourhood could not absorb its wall force) is merged
     // with its neighbours once more: mixing conserves mass, momentum and
@@ -787,7 +888,7 @@ void Foam::blastFluidSolver::mergeBadCells
         burnLinks_ = false;
         redistribute
         (
-            phiField, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1, &bad, true
+            phiField, c, &bad, true
         );
         burnLinks_ = true;
     }
@@ -814,28 +915,30 @@ bool Foam::blastFluidSolver::cutCellStage
     scalarField& cRhoE = cut_.rhoE;
     scalarField& cAlpha = cut_.alpha;
     scalarField& cAlphaRho1 = cut_.alphaRho1;
-    contentFromState(phiNow, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
+    contentFromState(phiNow, cut_);
     addWallTerms(s, dt);
 
     const blastTimeIntegrator& rk = rk_();
     rk.combine(s, dt, cutStart_.rho, cRho, residual_.rho);
     rk.combine(s, dt, cutStart_.rhoU, cRhoU, residual_.rhoU);
     rk.combine(s, dt, cutStart_.rhoE, cRhoE, residual_.rhoE);
-    if (twoPhase_)
+    if (multiPhase_)
     {
         rk.combine(s, dt, cutStart_.alpha, cAlpha, residual_.alpha);
         rk.combine(s, dt, cutStart_.alphaRho1, cAlphaRho1, residual_.alphaRho1);
     }
+    if (threePhase_)
+    {
+        rk.combine(s, dt, cutStart_.alpha2, cut_.alpha2, residual_.alpha2);
+        rk.combine
+        (
+            s, dt, cutStart_.alphaRho2, cut_.alphaRho2, residual_.alphaRho2
+        );
+    }
 
-    redistribute
-    (
-        phiEndPtr_(), cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1, &newCell_
-    );
-    mergeBadCells(phiEndPtr_(), cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
-    stateFromContent
-    (
-        phiEndPtr_->primitiveField(), cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1
-    );
+    redistribute(phiEndPtr_(), cut_, &newCell_);
+    mergeBadCells(phiEndPtr_(), cut_);
+    stateFromContent(phiEndPtr_->primitiveField(), cut_);
     return true;
 }
 
@@ -848,14 +951,19 @@ void Foam::blastFluidSolver::advanceCutCells(const scalar dt)
         primitivesFromConservative(true);
     }
     const scalarField& phi0 = fluidFractionPtr_->primitiveField();
-    contentFromState(phi0, cutStart_.rho, cutStart_.rhoU, cutStart_.rhoE, cutStart_.alpha, cutStart_.alphaRho1);
+    contentFromState(phi0, cutStart_);
     start_.rho = rho_.primitiveField();
     start_.rhoU = rhoU_.primitiveField();
     start_.rhoE = rhoE_.primitiveField();
-    if (twoPhase_)
+    if (multiPhase_)
     {
         start_.alpha = alpha1Ptr_->primitiveField();
         start_.alphaRho1 = alphaRho1Ptr_->primitiveField();
+    }
+    if (threePhase_)
+    {
+        start_.alpha2 = alpha2Ptr_->primitiveField();
+        start_.alphaRho2 = alphaRho2Ptr_->primitiveField();
     }
     const scalar lostMass0 = lostMass_, lostEnergy0 = lostEnergy_;
 
@@ -967,12 +1075,8 @@ void Foam::blastFluidSolver::setFluidFraction
 {
     volScalarField& phiField = fluidFractionPtr_();
     scalarField& phi = phiField.primitiveFieldRef();
-    scalarField& cRho = cut_.rho;
-    vectorField& cRhoU = cut_.rhoU;
-    scalarField& cRhoE = cut_.rhoE;
-    scalarField& cAlpha = cut_.alpha;
-    scalarField& cAlphaRho1 = cut_.alphaRho1;
-    contentFromState(phi, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
+    const scalarField& cRho = cut_.rho;
+    contentFromState(phi, cut_);
 
     // Cells that open or close exchange their content with their open
     // neighbours, and so do small cells whose gas volume changed (the
@@ -997,7 +1101,7 @@ void Foam::blastFluidSolver::setFluidFraction
         loadApertures(aperture);
         redistribute
         (
-            phiField, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1, &changed, true
+            phiField, cut_, &changed, true
         );
         // A cell that opened where no gas can reach it yet stays closed:
         // nothing is created; it opens in a step (a new cell)
@@ -1007,7 +1111,7 @@ void Foam::blastFluidSolver::setFluidFraction
         }
         phiField.correctBoundaryConditions();
     }
-    stateFromContent(phi, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
+    stateFromContent(phi, cut_);
 }
 
 
@@ -1162,9 +1266,7 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
     scalarField& cRho = cut_.rho;
     vectorField& cRhoU = cut_.rhoU;
     scalarField& cRhoE = cut_.rhoE;
-    scalarField& cAlpha = cut_.alpha;
-    scalarField& cAlphaRho1 = cut_.alphaRho1;
-    contentFromState(phi, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
+    contentFromState(phi, cut_);
     auto internal = [&](const label i)
     {
         return cRho[i] > 0 ? cRhoE[i] - 0.5*magSqr(cRhoU[i])/cRho[i] : 0;
@@ -1203,7 +1305,7 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
         }
         spreadEnergy_ += rest;
     }
-    redistribute(phiField, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1);
+    redistribute(phiField, cut_);
 
     // The written state is the corrected one, checked now (a bad state
     // stops the run before it is written). Only the cells whose state
@@ -1211,10 +1313,7 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
     // neighbourhoods; a round-off share of the spread changes few others)
     // when the others' are current, as the step leaves them
     const bool current = primitivesCurrent_;
-    stateFromContent
-    (
-        phi, cRho, cRhoU, cRhoE, cAlpha, cAlphaRho1, &gathered_.cells
-    );
+    stateFromContent(phi, cut_, &gathered_.cells);
     if (current)
     {
         primitivesOfCells(gathered_.cells);
@@ -1240,6 +1339,14 @@ void Foam::blastFluidSolver::addContent
     // content does: a crack's gas handed over by the point rule to a
     // sliver (benchBlast: 3.6e-6 kg of 400 kg/m3 gas into 2.7e-9 m3 of a
     // cell 1 % open) was compressed to 1360 kg/m3 and 13 GPa alone
+    if (threePhase_)
+    {
+        // The exchange carries material 1 and the rest (the crack gas of
+        // two materials; jwlIbFoam refuses crackGas with three)
+        FatalErrorInFunction
+            << "addContent takes two materials, the case has three "
+            << mixture_.materials() << exit(FatalError);
+    }
     if (!fluidFractionPtr_.valid())
     {
         addContentFull(cells, dm, dmU, dE, dm1);
@@ -1249,14 +1356,14 @@ void Foam::blastFluidSolver::addContent
     const scalarField& phi = phiField.primitiveField();
     const scalarField& V = mesh_.V();
     conservedFields& q = cut_;
-    contentFromState(phi, q.rho, q.rhoU, q.rhoE, q.alpha, q.alphaRho1);
+    contentFromState(phi, q);
     contentTo_.setSize(phi.size());
     contentTo_ = false;
     forAll(cells, k)
     {
         const label c = cells[k];
         checkHoldsGas(c, phi[c]*V[c]);
-        if (twoPhase_)
+        if (multiPhase_)
         {
             // The added masses at the cell's phase densities, the cell's
             // gas volume kept: alpha = (alpha Vg + dm1/rho1)/(Vg + dm1/rho1
@@ -1284,13 +1391,9 @@ void Foam::blastFluidSolver::addContent
     }
     if (returnReduce(contentTo_.found(true), orOp<bool>()))
     {
-        redistribute
-        (
-            phiField, q.rho, q.rhoU, q.rhoE, q.alpha, q.alphaRho1,
-            &contentTo_, true
-        );
+        redistribute(phiField, q, &contentTo_, true);
     }
-    stateFromContent(phi, q.rho, q.rhoU, q.rhoE, q.alpha, q.alphaRho1);
+    stateFromContent(phi, q);
     primitivesFromConservative(true);
 }
 
@@ -1313,7 +1416,7 @@ void Foam::blastFluidSolver::addContentFull
     {
         const label c = cells[k];
         const scalar Vg = V[c];
-        if (twoPhase_)
+        if (multiPhase_)
         {
             scalar& alpha = alpha1Ptr_->primitiveFieldRef()[c];
             const scalar r1 = rho1Ptr_->primitiveField()[c];

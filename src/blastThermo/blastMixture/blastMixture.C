@@ -20,11 +20,12 @@ Foam::blastMixture::blastMixture(const dictionary& dict)
     alphaMin_(dict.getOrDefault<scalar>("alphaMin", 1e-6)),
     unreacted_(nullptr)
 {
-    if (materials_.size() < 1 || materials_.size() > 2)
+    if (materials_.size() < 1 || materials_.size() > 3)
     {
         FatalIOErrorInFunction(dict)
-            << "Entry 'materials' must list one or two materials, got "
-            << materials_ << exit(FatalIOError);
+            << "Entry 'materials' must list one, two or three materials"
+            << " (e.g. (products water air)), got " << materials_
+            << exit(FatalIOError);
     }
     if (alphaMin_ < 0 || alphaMin_ > 0.1)
     {
@@ -34,12 +35,15 @@ Foam::blastMixture::blastMixture(const dictionary& dict)
     }
     // A material defined twice would be merged, the later entries winning
     caseChecks::checkInput(dict);
-    if (materials_.size() == 2 && materials_[0] == materials_[1])
+    forAll(materials_, i)
     {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'materials' lists " << materials_[0] << " twice: two"
-            << " different materials (products first) or one"
-            << exit(FatalIOError);
+        if (materials_.find(materials_[i]) != i)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'materials' lists " << materials_[i] << " twice:"
+                << " different materials (products first) or one"
+                << exit(FatalIOError);
+        }
     }
     forAll(materials_, i)
     {
@@ -68,9 +72,13 @@ void Foam::blastMixture::reserve(const label n) const
     if (g1_.size() < n)
     {
         g1_.setSize(n); f1_.setSize(n); d1_.setSize(n);
-        if (twoPhase())
+        if (multiPhase())
         {
             g2_.setSize(n); f2_.setSize(n); d2_.setSize(n);
+        }
+        if (threePhase())
+        {
+            g3_.setSize(n); f3_.setSize(n); d3_.setSize(n);
         }
         if (unreacted_)
         {
@@ -224,6 +232,130 @@ void Foam::blastMixture::rhoeC2
         const scalar c22 = ((1 + g2[i])*pi - f2[i])/rho2[i] + d2[i];
         c2[i] = (xi1*rho1[i]*c21 + xi2*rho2[i]*c22)/((xi1 + xi2)*rho[i]);
     }
+}
+
+
+void Foam::blastMixture::pc2
+(
+    const label n,
+    const UList<scalar>& alpha1,
+    const UList<scalar>& alpha2,
+    const UList<scalar>& rho1,
+    const UList<scalar>& rho2,
+    const UList<scalar>& rho3,
+    const UList<scalar>& rho,
+    const UList<scalar>& rhoe,
+    UList<scalar>& p,
+    UList<scalar>& c2,
+    const UList<scalar>* burn
+) const
+{
+    materials23(n, rho2, rho3, burn, rho1);
+    for (label i = 0; i < n; ++i)
+    {
+        scalar xi1, xi2, xi3;
+        volumeWeights(i, alpha1[i], alpha2[i], xi1, xi2, xi3);
+        const scalar xi = xi1 + xi2 + xi3;
+        const scalar pi = (rhoe[i] + xi1*f1_[i] + xi2*f2_[i] + xi3*f3_[i])/xi;
+        p[i] = pi;
+        c2[i] = mixtureC2(i, pi, xi1, xi2, xi3, rho1, rho2, rho3)/(xi*rho[i]);
+    }
+}
+
+
+void Foam::blastMixture::rhoeC2
+(
+    const label n,
+    const UList<scalar>& alpha1,
+    const UList<scalar>& alpha2,
+    const UList<scalar>& rho1,
+    const UList<scalar>& rho2,
+    const UList<scalar>& rho3,
+    const UList<scalar>& rho,
+    const UList<scalar>& p,
+    UList<scalar>& rhoe,
+    UList<scalar>& c2,
+    const UList<scalar>* burn
+) const
+{
+    materials23(n, rho2, rho3, burn, rho1);
+    for (label i = 0; i < n; ++i)
+    {
+        scalar xi1, xi2, xi3;
+        volumeWeights(i, alpha1[i], alpha2[i], xi1, xi2, xi3);
+        const scalar pi = p[i];
+        rhoe[i] = xi1*(pi - f1_[i]) + xi2*(pi - f2_[i]) + xi3*(pi - f3_[i]);
+        c2[i] =
+            mixtureC2(i, pi, xi1, xi2, xi3, rho1, rho2, rho3)
+           /((xi1 + xi2 + xi3)*rho[i]);
+    }
+}
+
+
+void Foam::blastMixture::materials23
+(
+    const label n,
+    const UList<scalar>& rho2,
+    const UList<scalar>& rho3,
+    const UList<scalar>* burn,
+    const UList<scalar>& rho1
+) const
+{
+    if (!threePhase())
+    {
+        FatalErrorInFunction
+            << "Three-material call with materials " << materials_
+            << exit(FatalError);
+    }
+    material1(n, rho1, burn);
+    SubList<scalar> g2(g2_, n), f2(f2_, n), d2(d2_, n);
+    SubList<scalar> g3(g3_, n), f3(f3_, n), d3(d3_, n);
+    const SubList<scalar> r2(rho2, n), r3(rho3, n);
+    eos_[1].Gamma(r2, g2);
+    eos_[1].pRefAndDerivative(r2, f2, d2);
+    eos_[2].Gamma(r3, g3);
+    eos_[2].pRefAndDerivative(r3, f3, d3);
+}
+
+
+Foam::scalar Foam::blastMixture::rhoeOf
+(
+    const UList<scalar>& alpha,
+    const UList<scalar>& rhoK,
+    const scalar p,
+    const scalar F
+) const
+{
+    scalar g1, f1;
+    material1(rhoK[0], F, g1, f1);
+    scalar r = alpha[0]*(p - f1)/g1;
+    for (label k = 1; k < size(); ++k)
+    {
+        r += alpha[k]*(p - eos_[k].pRef(rhoK[k]))/eos_[k].Gamma(rhoK[k]);
+    }
+    return r;
+}
+
+
+Foam::scalar Foam::blastMixture::pOf
+(
+    const UList<scalar>& alpha,
+    const UList<scalar>& rhoK,
+    const scalar rhoe,
+    const scalar F
+) const
+{
+    scalar g1, f1;
+    material1(rhoK[0], F, g1, f1);
+    scalar xi = alpha[0]/g1;
+    scalar num = rhoe + xi*f1;
+    for (label k = 1; k < size(); ++k)
+    {
+        const scalar xik = alpha[k]/eos_[k].Gamma(rhoK[k]);
+        xi += xik;
+        num += xik*eos_[k].pRef(rhoK[k]);
+    }
+    return num/xi;
 }
 
 

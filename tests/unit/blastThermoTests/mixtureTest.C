@@ -1,4 +1,4 @@
-// Unit tests of the two-material mixture (libblastThermo)
+// Unit tests of the two- and three-material mixture (libblastThermo)
 #include <gtest/gtest.h>
 #include "blastMixture.H"
 #include "JWL.H"
@@ -19,6 +19,66 @@ namespace
         "materials (products air);"
         "products { equationOfState JWL; explosive TNT; }"
         "air { equationOfState idealGas; gamma 1.4; }";
+
+    const char* threeText =
+        "materials (products water air);"
+        "products { equationOfState JWL; explosive TNT; }"
+        "water { equationOfState stiffenedGas; gamma 4.4; pInf 6e8; }"
+        "air { equationOfState idealGas; gamma 1.4; }";
+}
+
+
+TEST(Mixture, ThreeMaterialsRoundTripAndTwoMaterialLimit)
+{
+    blastMixture mix(dictOf(threeText));
+    ASSERT_TRUE(mix.threePhase());
+    ASSERT_FALSE(mix.twoPhase());
+    EXPECT_EQ(mix.index("water"), 1);
+    scalarField a1({1e-6, 0.3, 0.2, 0.999998});
+    scalarField a2({0.999998, 0.3, 0.7, 1e-6});
+    scalarField r1({1000, 1000, 80, 1630});
+    scalarField r2({1000, 1010, 1100, 1630});
+    scalarField r3({1000, 5, 7, 1630});
+    scalarField p({1e5, 2e7, 2.5e9, 8e9});
+    scalarField rho(a1*r1 + a2*r2 + (1 - a1 - a2)*r3);
+    scalarField rhoe(4), c2(4), p2(4), c22(4);
+    mix.rhoeC2(4, a1, a2, r1, r2, r3, rho, p, rhoe, c2);
+    mix.pc2(4, a1, a2, r1, r2, r3, rho, rhoe, p2, c22);
+    scalar worst = 0;
+    forAll(p, i)
+    {
+        worst = max(worst, mag(p2[i]/p[i] - 1));
+        EXPECT_NEAR(p2[i], p[i], 1e-9*p[i]);
+        EXPECT_NEAR(c22[i], c2[i], 1e-9*c2[i]);
+        EXPECT_GT(c2[i], 0);
+        const scalar a[3] = {a1[i], a2[i], 1 - a1[i] - a2[i]};
+        const scalar r[3] = {r1[i], r2[i], r3[i]};
+        const UList<scalar> al(const_cast<scalar*>(a), 3);
+        const UList<scalar> rl(const_cast<scalar*>(r), 3);
+        EXPECT_NEAR(mix.rhoeOf(al, rl, p[i]), rhoe[i], 1e-12*mag(rhoe[i]) + 1e-9);
+        EXPECT_NEAR(mix.pOf(al, rl, rhoe[i]), p[i], 1e-9*p[i]);
+    }
+    RecordProperty("roundTripRelError", std::to_string(worst));
+
+    // Pure water: the stiffened gas, c^2 = gamma (p + pInf)/rho
+    scalarField z(1, 0.0), one(1, 1.0), rw(1, 1000.0), pw(1, 1e5), e1(1), c1(1);
+    mix.rhoeC2(1, z, one, rw, rw, rw, rw, pw, e1, c1);
+    EXPECT_NEAR(c1[0], 4.4*(1e5 + 6e8)/1000, 1e-12*c1[0]);
+    EXPECT_NEAR(e1[0], (1e5 + 4.4*6e8)/3.4, 1e-6);
+
+    // No water (alpha2 = 0): the products/air mixture of two materials
+    blastMixture two(dictOf(twoText));
+    scalarField b1({0.3, 0.9, 1e-6}), b2(3, 0.0), s1({900, 1630, 1.2});
+    scalarField s3({5, 30, 1.2}), sp({2e7, 3e9, 1e5});
+    scalarField rho3(b1*s1 + (1 - b1)*s3), rho2(rho3);
+    scalarField e3(3), c3(3), e2(3), c2b(3);
+    mix.rhoeC2(3, b1, b2, s1, s1, s3, rho3, sp, e3, c3);
+    two.rhoeC2(3, b1, s1, s3, rho2, sp, e2, c2b);
+    forAll(sp, i)
+    {
+        EXPECT_NEAR(e3[i], e2[i], 1e-13*mag(e2[i]));
+        EXPECT_NEAR(c3[i], c2b[i], 1e-13*c2b[i]);
+    }
 }
 
 
@@ -61,6 +121,35 @@ TEST(Mixture, PureLimitsAreTheMaterials)
 TEST(Mixture, BadDictionaries)
 {
     EXPECT_THROW(blastMixture(dictOf("materials (a b c);")), Foam::error);
+    // four materials: more than the model takes
+    EXPECT_THROW
+    (
+        blastMixture
+        (
+            dictOf
+            (
+                "materials (products water air gas);"
+                "products { equationOfState JWL; explosive TNT; }"
+                "water { equationOfState stiffenedGas; gamma 4.4; pInf 6e8; }"
+                "air { equationOfState idealGas; gamma 1.4; }"
+                "gas { equationOfState idealGas; gamma 1.3; }"
+            )
+        ),
+        Foam::error
+    );
+    EXPECT_THROW
+    (
+        blastMixture
+        (
+            dictOf
+            (
+                "materials (products air products);"
+                "products { equationOfState JWL; explosive TNT; }"
+                "air { equationOfState idealGas; gamma 1.4; }"
+            )
+        ),
+        Foam::error
+    );
     EXPECT_THROW(blastMixture(dictOf("materials (products);")), Foam::error);
     EXPECT_THROW(blastMixture(dictOf("air { equationOfState idealGas; }")), Foam::error);
 }

@@ -231,6 +231,13 @@ maxThrow = throwDist.max()
 probe = joined_rows(here, "boreholeProbe", "p")
 tP, pP = probe[:, 0], probe[:, 1]
 
+# Hole-wall pressure (Allrun -water and -waterCase: the probe beside the
+# hole at its wall)
+holeWallDir = os.path.join(here, "postProcessing", "holeWallProbe")
+holeWall = joined_rows(here, "holeWallProbe", "p") if os.path.isdir(holeWallDir) else None
+materials = re.search(r"^materials\s*\(([^)]*)\)", open(_case("constant", "thermophysicalProperties")).read(),
+                      re.M).group(1).split()
+
 # Budget: gas + solid energy, gas mass
 b = budget_table(here)    # every start time's budget.dat, restarts joined
 Etot = gas_energy(b) + solid_energy(b)
@@ -624,4 +631,44 @@ if not lined and os.path.exists(linedSummary):
                  "(stress wave and hole pressure only)")
     fig.tight_layout()
     fig.savefig(os.path.join(here, "linedVsUnlined.png"), dpi=130)
+if holeWall is not None:
+    figs.append(figure("peak hole-wall pressure [Pa]", holeWall[:, 1].max()))
+    figs.append(figure("time of the peak hole-wall pressure [s]",
+                       holeWall[np.argmax(holeWall[:, 1]), 0]))
+    figs.append(figure("gap material (1 water, 0 air)", float("water" in materials)))
+
+# ------------------------------------------------ water versus air decoupling
+# Allrun -water: this case has the air gap, water/ the water-filled one.
+# Estimates: air gap, the quasi-static borehole pressure of the products
+# filling the hole (Esen et al. 2003, Pb above); water gap, acoustic
+# impedance matching: the products' shock into water at the charge (the
+# exact Riemann solution of TNT in the constant-volume explosion state |
+# water, p* = 3.3555 GPa: tutorials/jwlIbFoam/waterShockTubes), spreading
+# cylindrically to the wall (amplitude ~ r^-1/2) and transmitted into the
+# rock with 2 Z_rock/(Z_rock + Z_water) (Z = rho c: water 1000 kg/m3 at
+# the stiffened gas's 1625 m/s, the rock's p-wave impedance)
+waterSummary = _case("water", "summary.json")
+if holeWall is not None and "water" not in materials and os.path.exists(waterSummary):
+    wf = {f["name"]: f["value"] for f in json.load(open(waterSummary))["figures"]}
+    pAir = holeWall[:, 1].max()
+    pWater = wf["peak hole-wall pressure [Pa]"]
+    P_STAR_WATER = 3.3555e9
+    zWater, zRock = 1000 * 1625.0, RHO_ROCK * cP
+    estWater = P_STAR_WATER * np.sqrt(R_CHARGE / R_HOLE) * 2 * zRock / (zRock + zWater)
+    figs += [
+        figure("water versus air: water end time [s] (= air)", wf["end time [s]"], tEnd,
+               1e-9, relative=True),
+        figure("water versus air: peak hole-wall pressure, air gap [Pa]", pAir),
+        figure("water versus air: peak hole-wall pressure, water gap [Pa]", pWater),
+        figure("water versus air: estimate, air gap (Esen et al. Pb) [Pa]", Pb),
+        figure("water versus air: estimate, water gap (impedance matching) [Pa]", estWater),
+        # water transmits more: the ratio must exceed 1 (error: how far below)
+        figure("water versus air: peak hole-wall pressure ratio water/air (> 1)",
+               pWater / pAir, 1, 0, error=max(0.0, 1 - pWater / pAir)),
+        figure("water versus air: estimated ratio water/air", estWater / Pb),
+        figure("water versus air: water gap energy gained by gas + solid / initial gas"
+               " energy", wf["energy gained by gas + solid / initial gas energy (cut cells:"
+               " includes the gas leaving through the outlet)"], 0.0, 1e-2),
+    ]
+
 write_summary(os.path.join(here, "summary.json"), "jwlIbFoam/benchBlast", figs)

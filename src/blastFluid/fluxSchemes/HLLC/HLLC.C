@@ -26,7 +26,7 @@ void Foam::fluxSchemes::HLLC::fluxes
     const vectorField& Sf,
     const scalarField& magSf,
     const blastFaceStates& s,
-    const bool twoPhase,
+    const label nTracked,
     blastFaceFluxes& F
 ) const
 {
@@ -97,11 +97,17 @@ void Foam::fluxSchemes::HLLC::fluxes
         F.rhoE[f] = A*FE;
         F.uS[f] = A*uf;
 
-        if (twoPhase)
+        if (nTracked > 0)
         {
             const bool leftUpwind = (Sstar >= 0);
             F.rhoY1[f] = F.rho[f]*(leftUpwind ? s.Y1L[f] : s.Y1R[f]);
             F.alpha[f] = F.uS[f]*(leftUpwind ? s.alphaL[f] : s.alphaR[f]);
+            if (nTracked > 1)
+            {
+                F.rhoY2[f] = F.rho[f]*(leftUpwind ? s.Y2L[f] : s.Y2R[f]);
+                F.alpha2[f] =
+                    F.uS[f]*(leftUpwind ? s.alpha2L[f] : s.alpha2R[f]);
+            }
         }
     }
 }

@@ -28,7 +28,7 @@ void Foam::fluxSchemes::KurganovTadmor::fluxes
     const vectorField& Sf,
     const scalarField& magSf,
     const blastFaceStates& s,
-    const bool twoPhase,
+    const label nTracked,
     blastFaceFluxes& F
 ) const
 {
@@ -65,12 +65,19 @@ void Foam::fluxSchemes::KurganovTadmor::fluxes
             A*(wL*(EL + pL)*unL + wR*(ER + pR)*unR + wD*(ER - EL));
         F.uS[f] = A*(wL*unL + wR*unR);
 
-        if (twoPhase)
+        if (nTracked > 0)
         {
             const scalar r1L = rhoL*s.Y1L[f], r1R = rhoR*s.Y1R[f];
             F.rhoY1[f] = A*(wL*r1L*unL + wR*r1R*unR + wD*(r1R - r1L));
             const scalar aL = s.alphaL[f], aR = s.alphaR[f];
             F.alpha[f] = A*(wL*aL*unL + wR*aR*unR + wD*(aR - aL));
+            if (nTracked > 1)
+            {
+                const scalar r2L = rhoL*s.Y2L[f], r2R = rhoR*s.Y2R[f];
+                F.rhoY2[f] = A*(wL*r2L*unL + wR*r2R*unR + wD*(r2R - r2L));
+                const scalar bL = s.alpha2L[f], bR = s.alpha2R[f];
+                F.alpha2[f] = A*(wL*bL*unL + wR*bR*unR + wD*(bR - bL));
+            }
         }
     }
 }
