@@ -169,6 +169,13 @@ frontErr = max(abs(xm - xFrontL - frontEx), abs(xFrontR - xm - frontEx)) / LW
 logW = log_table(os.path.join(we, "log.jwlIbFoam"))
 dMassW = abs(logW[-1, 3] / logW[0, 3] - 1)
 dEnergyW = abs(logW[-1, 4] / logW[0, 4] - 1)
+# Restart at 100 us (waterExpansionRestart): field files at 200 us that differ
+dW1, dW2 = os.path.join(we, tW), os.path.join(here, "waterExpansionRestart", tW)
+restartFilesW = sorted(f for f in os.listdir(dW1) if os.path.isfile(os.path.join(dW1, f)))
+restartDifferW = sum(not filecmp.cmp(os.path.join(dW1, f), os.path.join(dW2, f), shallow=False)
+                     for f in restartFilesW)
+pRestart = read_field(we, "0.0001", "p", nW)
+cutAtRestart = int((pRestart == pCav).sum())
 # Without the cut-off: the run must stop at the first tension
 noCutLog = open(os.path.join(here, "waterExpansionNoCutOff", "log.jwlIbFoam")).read()
 noCutStopped = "non-physical state at time" in noCutLog
@@ -244,6 +251,8 @@ write_summary(os.path.join(here, "summary.json"), "waterShockTubes", [
     figure("waterExpansion: cavity volume per area [m]", cavity, 2 * uC * T, TOL_CAV, relative=True),
     figure("waterExpansion: cells at p_cav", cutCells),
     figure("waterExpansion: rarefaction position error / L", frontErr, 0, TOL_X, error=frontErr),
+    figure(f"waterExpansion restart at 100 us ({cutAtRestart} cells at p_cav): field files of"
+           f" {len(restartFilesW)} at 200 us that differ from the run through", restartDifferW, 0, 0),
     figure("waterExpansion: mass drift", dMassW, 0, 1e-13, error=dMassW),
     figure("waterExpansion: energy drift", dEnergyW, 0, 1e-13, error=dEnergyW),
     figure("waterExpansion without the cut-off stops at the first tension",
