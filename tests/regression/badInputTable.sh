@@ -78,6 +78,16 @@ sed -i 's/equationOfState idealGas; gamma 1.4; Cv 718;/equationOfState stiffened
     constant/thermophysicalProperties
 check stiffenedGasNegativePInf thermophysicalProperties pInf jwlIbFoam
 
+prep stiffenedGasNegativeCavitationPressure sod
+sed -i 's/equationOfState idealGas; gamma 1.4; Cv 718;/equationOfState stiffenedGas; gamma 4.4; pInf 6e8; cavitationPressure -2300;/' \
+    constant/thermophysicalProperties
+check stiffenedGasNegativeCavitationPressure thermophysicalProperties "'cavitationPressure'" jwlIbFoam
+
+prep stiffenedGasCavitationPressureWord sod
+sed -i 's/equationOfState idealGas; gamma 1.4; Cv 718;/equationOfState stiffenedGas; gamma 4.4; pInf 6e8; cavitationPressure off;/' \
+    constant/thermophysicalProperties
+check stiffenedGasCavitationPressureWord thermophysicalProperties "'cavitationPressure'" jwlIbFoam
+
 prep jwlOmegaZero tntCharged
 sed -i 's/explosive       TNT;/explosive TNT; omega 0;/' constant/thermophysicalProperties
 check jwlOmegaZero thermophysicalProperties "'omega'" jwlIbFoam

@@ -1,7 +1,9 @@
 #!/bin/bash
 # Regression: tutorials/jwlIbFoam/waterShockTubes (Allrun -quick): water/air
 # and TNT/water shock tubes against the exact Riemann solution, the
-# three-material contact (p, u uniform, masses kept); figures from summary.json
+# three-material contact (p, u uniform, masses kept), the cavitating water
+# expansion (cut-off model) against its exact solution and the same run
+# without the cut-off stopping; figures from summary.json
 set -e
 cd "$JWLIBFOAM_TEST_DIR"
 cp -r "$JWLIBFOAM_TUTORIALS/jwlIbFoam/waterShockTubes" .

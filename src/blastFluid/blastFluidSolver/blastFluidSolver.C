@@ -329,6 +329,10 @@ void Foam::blastFluidSolver::checkRestartState()
     // The cells only: patch values of a written state are not used (alpha
     // and alphaRho are clamped to their range as in any step)
     checkFieldRange(rho_, 0, true, GREAT, "the density", false);
+    // A written state was an accepted one: its cells at the cavitation
+    // cut-off are the flow's (as in the run through, so restarts stay
+    // bitwise)
+    cavitated_ = true;
     if (primitivesFromConservative(false))
     {
         return;
@@ -519,7 +523,7 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
         mixture_.pc2
         (
             n, f.alpha1, f.alpha2, f.r1, f.r2, f.r3, rho, rhoe_, p, c_,
-            burnCells()
+            burnCells(), pEOS()
         );
     }
     else if (multiPhase_)
@@ -532,7 +536,10 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
         {
             phaseDensities(rho[i], ar1[i], alpha[i], r1[i], r2[i]);
         }
-        mixture_.pc2(n, alpha, r1, r2, rho, rhoe_, p, c_, burnCells());
+        mixture_.pc2
+        (
+            n, alpha, r1, r2, rho, rhoe_, p, c_, burnCells(), pEOS()
+        );
     }
     else
     {
@@ -540,7 +547,11 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
         {
             rhoSafe_[i] = max(rho[i], rhoFloor);
         }
-        mixture_.pc2(n, rhoSafe_, rhoSafe_, rhoSafe_, rhoSafe_, rhoe_, p, c_);
+        mixture_.pc2
+        (
+            n, rhoSafe_, rhoSafe_, rhoSafe_, rhoSafe_, rhoe_, p, c_,
+            nullptr, pEOS()
+        );
     }
 
     // Check and take the square root of c^2
@@ -553,18 +564,42 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
         e[i] = rhoe_[i]/max(rho[i], VSMALL);
     }
 
+    // Cavitation: tension the old check would have retried (p_EOS <= 0)
+    // is retried unless the flow put it there (the cell was cut off in
+    // the last accepted state) or the cell is first order already; so a
+    // run whose retries remove every tension stays bit for bit the same
+    const scalarField& lo0 = lowOrder_.primitiveField();
+    const auto unexpectedTension = [&](const label i)
+    {
+        return
+            !fatal && pEOS_.size() && !(pEOS_[i] > 0) && !cavitated_[i]
+         && !(lo0[i] > 0);
+    };
+    label firstTension = -1;
+    if (!fatal && pEOS_.size())
+    {
+        for (label i = 0; i < n && firstTension < 0; ++i)
+        {
+            if (unexpectedTension(i)) firstTension = i;
+        }
+    }
+
     if (!fatal)
     {
-        if (returnReduce(bad >= 0, orOp<bool>()))
+        if (returnReduce(bad >= 0 || firstTension >= 0, orOp<bool>()))
         {
             // Mark every bad cell for a first-order retry
             scalarField& lo = lowOrder_.primitiveFieldRef();
-            for (label i = bad; i < n; ++i)
+            const label first =
+                bad < 0 ? firstTension
+              : firstTension < 0 ? bad
+              : min(bad, firstTension);
+            for (label i = max(first, label(0)); i < n; ++i)
             {
                 if
                 (
                     !(rho[i] > 0) || !(p[i] > 0) || !(c_[i] > 0)
-                 || !std::isfinite(p[i])
+                 || !std::isfinite(p[i]) || unexpectedTension(i)
                 )
                 {
                     lo[i] = 1;
@@ -577,6 +612,11 @@ bool Foam::blastFluidSolver::primitivesFromConservative(const bool fatal)
     if (returnReduce(bad >= 0, orOp<bool>()))
     {
         stopOnBadCell(bad);
+    }
+    const scalar pCav = mixture_.cavitationPressure();
+    forAll(cavitated_, i)
+    {
+        cavitated_[i] = pEOS_[i] < pCav;
     }
 
     correctPrimitiveBoundaries();
@@ -1573,6 +1613,8 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     c_(mesh.nCells(), 0),
     rhoe_(mesh.nCells(), 0),
     rhoSafe_(mesh.nCells(), 1),
+    pEOS_(mixture_.cavitation() ? mesh.nCells() : 0, 0),
+    cavitated_(mixture_.cavitation() ? mesh.nCells() : 0, false),
     q_
     (
         IOobject

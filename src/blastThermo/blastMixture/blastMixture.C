@@ -18,7 +18,8 @@ Foam::blastMixture::blastMixture(const dictionary& dict)
     materials_(dict.get<wordList>("materials")),
     eos_(materials_.size()),
     alphaMin_(dict.getOrDefault<scalar>("alphaMin", 1e-6)),
-    unreacted_(nullptr)
+    unreacted_(nullptr),
+    pCav_(equationOfState::noCavitation)
 {
     if (materials_.size() < 1 || materials_.size() > 3)
     {
@@ -56,6 +57,7 @@ Foam::blastMixture::blastMixture(const dictionary& dict)
                 << exit(FatalIOError);
         }
         eos_.set(i, equationOfState::New(name, dict.subDict(name)));
+        pCav_ = max(pCav_, eos_[i].cavitationPressure());
     }
     const auto* jwl = dynamic_cast<const equationsOfState::JWL*>(&eos_[0]);
     if (jwl && jwl->hasUnreacted())
@@ -151,7 +153,8 @@ void Foam::blastMixture::pc2
     const UList<scalar>& rhoe,
     UList<scalar>& p,
     UList<scalar>& c2,
-    const UList<scalar>* burn
+    const UList<scalar>* burn,
+    UList<scalar>* pEOS
 ) const
 {
     material1(n, rho1, burn);
@@ -161,9 +164,16 @@ void Foam::blastMixture::pc2
     {
         for (label i = 0; i < n; ++i)
         {
-            const scalar pi = g1[i]*rhoe[i] + f1[i];
+            const auto c2At = [&](const scalar pp)
+            {
+                return ((1 + g1[i])*pp - f1[i])/rho1[i] + d1[i];
+            };
+            scalar pi = g1[i]*rhoe[i] + f1[i];
+            scalar c2i = c2At(pi);
+            if (pEOS) (*pEOS)[i] = pi;
+            cutOff(pi, c2i, c2At);
             p[i] = pi;
-            c2[i] = ((1 + g1[i])*pi - f1[i])/rho1[i] + d1[i];
+            c2[i] = c2i;
         }
         return;
     }
@@ -180,11 +190,18 @@ void Foam::blastMixture::pc2
         const scalar xi1 = a1/g1[i];
         const scalar xi2 = a2/g2[i];
         const scalar xi = xi1 + xi2;
-        const scalar pi = (rhoe[i] + xi1*f1[i] + xi2*f2[i])/xi;
+        const auto c2At = [&](const scalar pp)
+        {
+            const scalar c21 = ((1 + g1[i])*pp - f1[i])/rho1[i] + d1[i];
+            const scalar c22 = ((1 + g2[i])*pp - f2[i])/rho2[i] + d2[i];
+            return (xi1*rho1[i]*c21 + xi2*rho2[i]*c22)/(xi*rho[i]);
+        };
+        scalar pi = (rhoe[i] + xi1*f1[i] + xi2*f2[i])/xi;
+        scalar c2i = c2At(pi);
+        if (pEOS) (*pEOS)[i] = pi;
+        cutOff(pi, c2i, c2At);
         p[i] = pi;
-        const scalar c21 = ((1 + g1[i])*pi - f1[i])/rho1[i] + d1[i];
-        const scalar c22 = ((1 + g2[i])*pi - f2[i])/rho2[i] + d2[i];
-        c2[i] = (xi1*rho1[i]*c21 + xi2*rho2[i]*c22)/(xi*rho[i]);
+        c2[i] = c2i;
     }
 }
 
@@ -247,7 +264,8 @@ void Foam::blastMixture::pc2
     const UList<scalar>& rhoe,
     UList<scalar>& p,
     UList<scalar>& c2,
-    const UList<scalar>* burn
+    const UList<scalar>* burn,
+    UList<scalar>* pEOS
 ) const
 {
     materials23(n, rho2, rho3, burn, rho1);
@@ -256,9 +274,18 @@ void Foam::blastMixture::pc2
         scalar xi1, xi2, xi3;
         volumeWeights(i, alpha1[i], alpha2[i], xi1, xi2, xi3);
         const scalar xi = xi1 + xi2 + xi3;
-        const scalar pi = (rhoe[i] + xi1*f1_[i] + xi2*f2_[i] + xi3*f3_[i])/xi;
+        const auto c2At = [&](const scalar pp)
+        {
+            return
+                mixtureC2(i, pp, xi1, xi2, xi3, rho1, rho2, rho3)
+               /(xi*rho[i]);
+        };
+        scalar pi = (rhoe[i] + xi1*f1_[i] + xi2*f2_[i] + xi3*f3_[i])/xi;
+        scalar c2i = c2At(pi);
+        if (pEOS) (*pEOS)[i] = pi;
+        cutOff(pi, c2i, c2At);
         p[i] = pi;
-        c2[i] = mixtureC2(i, pi, xi1, xi2, xi3, rho1, rho2, rho3)/(xi*rho[i]);
+        c2[i] = c2i;
     }
 }
 

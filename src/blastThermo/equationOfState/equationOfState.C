@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "equationOfState.H"
+#include "OStringStream.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -15,6 +16,9 @@ namespace Foam
     defineTypeNameAndDebug(equationOfState, 0);
     defineRunTimeSelectionTable(equationOfState, dictionary);
 }
+
+// Out-of-class definition: the constant may be bound to a reference
+constexpr Foam::scalar Foam::equationOfState::noCavitation;
 
 
 // * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
@@ -75,6 +79,61 @@ void Foam::equationOfState::checkEntries
 }
 
 
+Foam::scalar Foam::equationOfState::readCavitationPressure
+(
+    const dictionary& dict,
+    const scalar deflt
+) const
+{
+    const word key("cavitationPressure");
+    const entry* ePtr = dict.findEntry(key, keyType::LITERAL);
+    if (!ePtr)
+    {
+        return deflt;
+    }
+    if (ePtr->isStream())
+    {
+        ITstream& is = ePtr->stream();
+        if (is.size() == 1)
+        {
+            const token& t = is[0];
+            if (t.isWord() && t.wordToken() == "none")
+            {
+                return noCavitation;
+            }
+            if (t.isNumber())
+            {
+                const scalar value = t.number();
+                if (value > 0 && value < VGREAT)
+                {
+                    return value;
+                }
+            }
+        }
+    }
+    // What was given, as written (tokens, or 'a dictionary')
+    OStringStream given;
+    if (ePtr->isStream())
+    {
+        const ITstream& is = ePtr->stream();
+        forAll(is, i)
+        {
+            given << (i ? " " : "") << is[i];
+        }
+    }
+    else
+    {
+        given << "a dictionary";
+    }
+    FatalIOErrorInFunction(dict)
+        << "Material " << name_ << ": entry '" << key << "' must be a"
+        << " pressure > 0 [Pa] (the liquid's cut-off, e.g. 2300 for water)"
+        << " or none, got '" << given.str().c_str() << "'"
+        << exit(FatalIOError);
+    return deflt;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::equationOfState::equationOfState
@@ -83,7 +142,8 @@ Foam::equationOfState::equationOfState
     const dictionary& dict
 )
 :
-    name_(name)
+    name_(name),
+    pCav_(noCavitation)
 {}
 
 

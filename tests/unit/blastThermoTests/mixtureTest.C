@@ -155,6 +155,137 @@ TEST(Mixture, BadDictionaries)
 }
 
 
+// Cavitation cut-off (stiffenedGas 'cavitationPressure', applied by pc2)
+
+TEST(Cavitation, StretchedWaterIsCutOffAtTheCavitationPressure)
+{
+    // One material: water stretched to -3e5 Pa (the state benchBlast
+    // -water stopped on), one at 1 atm, one just above the cut-off
+    blastMixture mix(dictOf
+    (
+        "materials (water);"
+        "water { equationOfState stiffenedGas; gamma 4.4; pInf 6e8; }"
+    ));
+    ASSERT_TRUE(mix.cavitation());
+    EXPECT_EQ(mix.cavitationPressure(), 2300);   // the liquid's default
+    scalarField r(3, 1000.0), pIn({-3e5, 1e5, 2400}), rhoe(3), c2(3);
+    mix.rhoeC2(3, r, r, r, r, pIn, rhoe, c2);
+    scalarField p(3), c22(3), pEOS(3);
+    mix.pc2(3, r, r, r, r, rhoe, p, c22, nullptr, &pEOS);
+    EXPECT_EQ(p[0], 2300);
+    EXPECT_NEAR(c22[0], 4.4*(2300 + 6e8)/1000, 1e-12*c22[0]);
+    EXPECT_GT(c22[0], c2[0]);
+    EXPECT_NEAR(pEOS[0], -3e5, 1e-6);
+    // Above the cut-off: the equation of state as without cavitation,
+    // bit for bit
+    blastMixture none(dictOf
+    (
+        "materials (water);"
+        "water { equationOfState stiffenedGas; gamma 4.4; pInf 6e8;"
+        " cavitationPressure none; }"
+    ));
+    EXPECT_FALSE(none.cavitation());
+    scalarField pn(3), c2n(3);
+    none.pc2(3, r, r, r, r, rhoe, pn, c2n);
+    EXPECT_EQ(pn[0], pEOS[0]);
+    for (label i = 1; i < 3; ++i)
+    {
+        EXPECT_EQ(p[i], pn[i]);
+        EXPECT_EQ(c22[i], c2n[i]);
+    }
+    RecordProperty("cutOffPressure", std::to_string(p[0]));
+}
+
+
+TEST(Cavitation, ThreeMaterialsCutOffOnlyPhysicalStates)
+{
+    // (products water air): water's cut-off applies to the mixture
+    // pressure of any cell whose state the equations of state allow
+    // (c^2 > 0): a water/air cell in tension is cut off; air with
+    // negative internal energy (c^2 < 0) keeps its pressure, so the
+    // solver still retries or stops on it
+    blastMixture mix(dictOf(threeText));
+    ASSERT_TRUE(mix.cavitation());
+    // (lists of two given element by element: {a, b} would read as
+    // (size, value))
+    scalarField a1(2, 1e-6), a2(2, 1e-6), r1(2, 1.2), r2(2, 1.2);
+    scalarField r3(2, 1.2), pIn(2, -1e5);
+    a2[0] = 0.7;
+    r1[0] = 1000;
+    r2[0] = 1000;
+    pIn[0] = -3e5;
+    scalarField rho(a1*r1 + a2*r2 + (1 - a1 - a2)*r3);
+    scalarField rhoe(2), c2(2), p(2), c22(2), pEOS(2);
+    mix.rhoeC2(2, a1, a2, r1, r2, r3, rho, pIn, rhoe, c2);
+    mix.pc2(2, a1, a2, r1, r2, r3, rho, rhoe, p, c22, nullptr, &pEOS);
+    EXPECT_GT(c2[0], 0);
+    EXPECT_EQ(p[0], 2300);
+    EXPECT_GT(c22[0], c2[0]);
+    EXPECT_LT(c2[1], 0);
+    EXPECT_NEAR(p[1], -1e5, 1e-6);
+    EXPECT_EQ(c22[1], c2[1]);
+
+    // Products and air: no material cavitates
+    blastMixture two(dictOf(twoText));
+    EXPECT_FALSE(two.cavitation());
+}
+
+
+TEST(Cavitation, Entries)
+{
+    const auto water = [](const char* entry)
+    {
+        const std::string text =
+            std::string("materials (water); water { equationOfState stiffenedGas;"
+                        " gamma 4.4; pInf 6e8; ") + entry + " }";
+        return blastMixture(dictOf(text.c_str()));
+    };
+    EXPECT_EQ(water("cavitationPressure 1e3;").cavitationPressure(), 1e3);
+    EXPECT_FALSE(water("cavitationPressure none;").cavitation());
+    // A stiffened gas with pInf = 0 is a gas: no cut-off by default
+    blastMixture gas(dictOf
+    (
+        "materials (air); air { equationOfState stiffenedGas; gamma 1.4;"
+        " pInf 0; }"
+    ));
+    EXPECT_FALSE(gas.cavitation());
+    // Bad entries: FatalIOError naming the dictionary and the entry
+    for
+    (
+        const char* bad
+      : {
+            "cavitationPressure 0;", "cavitationPressure -2300;",
+            "cavitationPressure off;", "cavitationPressure 2300 Pa;",
+            "cavitationPressure { p 2300; }", "cavitationPressure;",
+            "cavitationPresure 2300;"
+        }
+    )
+    {
+        SCOPED_TRACE(bad);
+        EXPECT_THROW(water(bad), Foam::error);
+    }
+    try
+    {
+        water("cavitationPressure -1;");
+    }
+    catch (const Foam::IOerror& err)
+    {
+        const std::string msg(err.message());
+        EXPECT_NE(msg.find("cavitationPressure"), std::string::npos) << msg;
+    }
+    // Gases and explosives have no cut-off: the entry is unknown there
+    EXPECT_THROW
+    (
+        blastMixture(dictOf
+        (
+            "materials (air); air { equationOfState idealGas; gamma 1.4;"
+            " cavitationPressure 2300; }"
+        )),
+        Foam::error
+    );
+}
+
+
 // Programmed burn: the unreacted explosive (Murnaghan) and the blend of
 // material 1 in blastMixture
 

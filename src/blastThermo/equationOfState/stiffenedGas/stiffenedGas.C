@@ -18,6 +18,9 @@ namespace equationsOfState
 }
 }
 
+constexpr Foam::scalar
+Foam::equationsOfState::stiffenedGas::liquidCavitationPressure;
+
 Foam::equationsOfState::stiffenedGas::stiffenedGas
 (
     const word& name,
@@ -28,7 +31,7 @@ Foam::equationsOfState::stiffenedGas::stiffenedGas
     gamma_(dict.get<scalar>("gamma")),
     pInf_(dict.get<scalar>("pInf"))
 {
-    checkEntries(dict, wordList({"gamma", "pInf"}));
+    checkEntries(dict, wordList({"gamma", "pInf", "cavitationPressure"}));
 
     if (!(gamma_ > 1) || pInf_ < 0)
     {
@@ -36,13 +39,31 @@ Foam::equationsOfState::stiffenedGas::stiffenedGas
             << "Material " << name << ": need gamma > 1 and pInf >= 0, got "
             << "gamma " << gamma_ << " pInf " << pInf_ << exit(FatalIOError);
     }
+
+    // A liquid (pInf > 0) cavitates by default: without the cut-off water
+    // drawn into an opening crack is stretched into tension and the solver
+    // stops at the first negative pressure. A gas (pInf = 0) cannot be
+    // stretched below p = 0 by its equation of state: no cut-off
+    pCav_ = readCavitationPressure
+    (
+        dict,
+        pInf_ > 0 ? liquidCavitationPressure : noCavitation
+    );
 }
 
 
 void Foam::equationsOfState::stiffenedGas::write(Ostream& os) const
 {
-    os  << name_ << ": stiffenedGas gamma " << gamma_ << " pInf " << pInf_
-        << nl;
+    os  << name_ << ": stiffenedGas gamma " << gamma_ << " pInf " << pInf_;
+    if (cavitates())
+    {
+        os  << " cavitationPressure " << pCav_;
+    }
+    else
+    {
+        os  << " cavitationPressure none";
+    }
+    os  << nl;
 }
 
 
