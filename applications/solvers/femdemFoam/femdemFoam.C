@@ -121,6 +121,7 @@ int main(int argc, char *argv[])
 
     const triangleMesh mesh = triangleMesh::New(runTime);
     femdemSolid solid(mesh, solidDict);
+    reportJointStrengths(solid);
 
     const dictionary outDict = properties.subOrEmptyDict("output");
     const scalar logInterval =

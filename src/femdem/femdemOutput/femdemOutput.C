@@ -11,6 +11,10 @@ License
 #include "IFstream.H"
 #include "OSspecific.H"
 #include "edgeList.H"
+#include "strengthDistribution.H"
+#include "Pstream.H"
+#include <cstring>
+#include <cstdio>
 
 // * * * * * * * * * * * * * * * * Functions * * * * * * * * * * * * * * * * //
 
@@ -144,6 +148,16 @@ void Foam::femdemOutput::writeVtk
         length.append(solid.jointLength0()[j]);
     }
     writer.addLines(pts, edgeList(lines), length, "initialJointLength");
+    if (solid.jointStrength().size())
+    {
+        scalarList w(lines.size());
+        label i = 0;
+        forAll(jn, j)
+        {
+            if (solid.jointBroken()[j]) w[i++] = solid.jointStrength()[j];
+        }
+        writer.addLineField("strengthFactor", w);
+    }
     forAll(jointFieldValues, k)
     {
         const scalarList& all = jointFieldValues[k];
@@ -163,6 +177,76 @@ void Foam::femdemOutput::writeVtk
         writer.addLineField(jointFieldNames[k], values);
     }
     writer.endStep();
+}
+
+
+void Foam::femdemOutput::reportJointStrengths(const femdemSolid& solid)
+{
+    const scalarList& w = solid.jointStrength();
+    if (!returnReduce(w.size() > 0, orOp<bool>()))
+    {
+        return;
+    }
+    scalar sum = 0, sum2 = 0, lo = GREAT, hi = -GREAT;
+    uint64_t digest = 0;
+    for (const scalar f : w)
+    {
+        sum += f;
+        sum2 += f*f;
+        lo = min(lo, f);
+        hi = max(hi, f);
+        uint64_t b;
+        std::memcpy(&b, &f, sizeof b);
+        digest += strengthDistribution::mix(b);   // order-free (mod 2^64)
+    }
+    const label n = w.size();
+    const scalar mean = n ? sum/n : 0;
+    const scalar cv =
+        n > 1 && mean > 0
+      ? std::sqrt(max(sum2/n - mean*mean, scalar(0))*n/(n - 1))/mean
+      : 0;
+    char hex[24];
+    std::snprintf
+    (
+        hex, sizeof hex, "%016llx", static_cast<unsigned long long>(digest)
+    );
+
+    // Every rank's digest and count to the master, which compares them
+    List<word> digests(Pstream::nProcs());
+    digests[Pstream::myProcNo()] = word(hex) + "/" + Foam::name(n);
+    Pstream::gatherList(digests);
+    label differ = 0;
+    if (Pstream::master())
+    {
+        forAll(digests, proci)
+        {
+            if (digests[proci] != digests[0]) ++differ;
+        }
+    }
+    reduce(differ, maxOp<label>());
+    Info<< "Joint strengths (strengthDistribution): " << n << " joints,"
+        << " factor mean " << mean << ", coefficient of variation " << cv
+        << ", min " << lo << ", max " << hi << ", digest " << hex;
+    if (Pstream::parRun())
+    {
+        if (differ)
+        {
+            Info<< "; DIFFER between ranks";
+        }
+        else
+        {
+            Info<< "; the same on all " << Pstream::nProcs() << " ranks";
+        }
+    }
+    Info<< endl;
+    if (differ)
+    {
+        FatalErrorInFunction
+            << "the joint strengths differ between the ranks (digest/joints"
+            << " per rank: " << digests << "): every rank must read the"
+            << " same constant/solidMesh and femdemProperties"
+            << exit(FatalError);
+    }
 }
 
 
