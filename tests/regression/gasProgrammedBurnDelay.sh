@@ -31,6 +31,16 @@ prepare()   # prepare <case>: a copy of the planar case, mesh, 0/
     blockMesh -case $1 > $1/log.blockMesh 2>&1
 }
 
+twoRanks()  # twoRanks <case>: decomposeParDict for 2 ranks, cut at x = 0.06
+{
+    cat > $1/system/decomposeParDict <<'EOD'
+FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
+numberOfSubdomains 2;
+method simple;
+coeffs { n (2 1 1); }
+EOD
+}
+
 # 1. delayed PETN detonation, restart
 prepare petn
 sed -i 's/explosive TNT;/explosive PETN;/' petn/constant/thermophysicalProperties
@@ -60,12 +70,7 @@ fi
 prepare petnPar
 cp petn/constant/thermophysicalProperties petnPar/constant/
 cp petn/system/controlDict petn/system/setChargeDict petnPar/system/
-cat > petnPar/system/decomposeParDict <<'EOD'
-FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
-numberOfSubdomains 2;
-method simple;
-coeffs { n (2 1 1); }
-EOD
+twoRanks petnPar
 (
     cd petnPar
     setCharge > log.setCharge 2>&1
@@ -151,12 +156,7 @@ fills   ( box { min (0.1 -1 -1); max (0.11 1 1); material water; rho 1000; } );
 EOD
 foamDictionary -entry endTime -set 1.6e-5 water3/system/controlDict > /dev/null
 setCharge -case water3 > water3/log.setCharge 2>&1
-cat > water3/system/decomposeParDict <<'EOD'
-FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
-numberOfSubdomains 2;
-method simple;
-coeffs { n (2 1 1); }
-EOD
+twoRanks water3
 rm -rf water3Par water3Pert && cp -r water3 water3Par && cp -r water3 water3Pert
 jwlIbFoam -case water3 > water3/log.jwlIbFoam 2>&1
 /usr/bin/python3 "$data/check.py" --t0 3e-6 --inert water3 || fail=1
