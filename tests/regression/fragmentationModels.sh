@@ -58,6 +58,27 @@ for x50, xmax, b in [(0.03, 0.3, 1.5), (0.2, 1.0, 2.5), (0.448, 2.0, 2.431),
     check(f"Swebrec fit xmax (x50 {x50}, xmax {xmax}, b {b})", f["xmax"], xmax, 1e-6)
     check(f"Swebrec fit b (x50 {x50}, xmax {xmax}, b {b})", f["b"], b, 1e-6)
 
+# A log-logistic curve P = 1/(1 + (x50/x)^k): the Swebrec's limit xmax,
+# b -> infinity, which an unbounded fit chases to overflow; with the bound
+# (the block's size) xmax stops at it (within 1 %: x50 moves in the bounded
+# fit), the fit still close (a finite xmax cannot match the limit) and flagged,
+# and the fits of the Swebrec curves above do not touch their bound
+for x50, k, bound in [(0.03, 2.0, 0.7), (0.2, 3.5, 5.0)]:
+    x = np.geomspace(x50 / 20, 20 * x50, 40)
+    P = 1 / (1 + (x50 / x) ** k)
+    f = bf.fit_swebrec(x, P, xmaxBound=bound)
+    ok = f["atBound"] and f["xmax"] <= bound * 1.01 and f["rms"] < 0.03
+    print(f">> log-logistic (x50 {x50}, k {k}): Swebrec xmax {f['xmax']:.4g} at the bound {bound}"
+          f" ({f['atBound']}; tolerance 1 %), x50 {f['x50']:.4g}, rms {f['rms']:.2g} (tolerance 0.03)"
+          + ("" if ok else "  <-- FAIL"))
+    fails += not ok
+f = bf.fit_swebrec(*(lambda x: (x, bf.swebrec(x, 0.2, 1.0, 2.5)))(np.geomspace(0.01, 0.95, 40)),
+                   xmaxBound=1.5)
+ok = not f["atBound"] and abs(f["xmax"] - 1.0) < 1e-6
+print(f">> Swebrec curve (xmax 1.0) with the bound 1.5: xmax {f['xmax']:.9g}, bound not touched"
+      + ("" if ok else "  <-- FAIL"))
+fails += not ok
+
 # Passing curve: 200 equal-mass fragments at the mid-quantiles of RR
 x50, n, N = 0.04, 1.3, 200
 Pm = (np.arange(N) + 0.5) / N

@@ -144,7 +144,9 @@ limited = size < 2 * hFrag
 xs, Pass, dP = bf.passing_curve(size, A)
 lim = limited[np.argsort(size)]
 rr = bf.fit_rosin_rammler(xs[~lim], Pass[~lim], dP[~lim])
-sw = bf.fit_swebrec(xs[~lim], Pass[~lim], dP[~lim])
+# Swebrec's xmax at most the block's diagonal (no fragment is larger)
+BLOCK = np.hypot(BENCH[1] - BENCH[0], BENCH[3] - BENCH[2])
+sw = bf.fit_swebrec(xs[~lim], Pass[~lim], dP[~lim], xmaxBound=BLOCK)
 x50 = bf.percentile(xs, Pass, 0.5)
 x80 = bf.percentile(xs, Pass, 0.8)
 # The fit used before (why it was 32 % off): linear regression of
@@ -515,7 +517,8 @@ figs = [
            error=sw["rms"]),
     figure("Swebrec x50 [m] (vs measured)", sw["x50"], x50, X50_TOL, relative=True),
     figure("Swebrec x80 [m] (vs measured)", sw["x80"], x80, X80_TOL, relative=True),
-    figure("Swebrec xmax [m]", sw["xmax"]),
+    figure("Swebrec xmax [m]" + (f" (at its bound, the block's diagonal {BLOCK:.3g} m: the curve"
+           " is nearer the log-logistic limit)" if sw["atBound"] else ""), sw["xmax"]),
     figure("Swebrec undulation b", sw["b"]),
     figure("old linearised Rosin-Rammler x50 [m] (all fragments; not checked)", x50Old,
            x50, relative=True, passed=True),

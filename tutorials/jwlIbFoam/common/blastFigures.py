@@ -94,12 +94,17 @@ def percentile(x, P, p):
     return float(np.exp(np.interp(p, P, np.log(x))))
 
 
-def _fit(model, p0, x, P, w):
+def _fit(model, p0, x, P, w, upper=None):
+    """Least squares of model(x, q) on P over log q; upper: bounds on q
+    (None: unbounded)"""
     w = np.ones_like(P) if w is None else np.asarray(w, float)
     sw = np.sqrt(w / w.sum())
+    if upper is None:
+        kw = {"method": "lm" if len(P) > len(p0) else "trf"}
+    else:
+        kw = {"method": "trf", "bounds": (-np.inf, np.log(upper))}
     res = least_squares(lambda q: sw * (model(x, np.exp(q)) - P), np.log(p0),
-                        xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=5000,
-                        method="lm" if len(P) > len(p0) else "trf")
+                        xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=5000, **kw)
     rms = float(np.sqrt(np.sum((sw * (model(x, np.exp(res.x)) - P)) ** 2)))
     return np.exp(res.x), rms
 
@@ -123,19 +128,30 @@ def fit_rosin_rammler(x, P, w=None, p0=None):
             "rms": rms}
 
 
-def fit_swebrec(x, P, w=None, p0=None):
+def fit_swebrec(x, P, w=None, p0=None, xmaxBound=None):
     """Least squares on P over x50, xmax - x50 (> 0) and b; start from p0
     (x50, xmax, b), default the curve's x50, xmax above the largest size
-    and b = 2"""
+    and b = 2. xmaxBound: the largest fragment the rock can give (the
+    block's size); a fit whose xmax runs past it (the curve is closer to
+    the Swebrec's log-logistic limit xmax, b -> infinity, which it never
+    reaches: xmax 2.5e306 m was seen) is made again with xmax - x50 at
+    most xmaxBound less the curve's x50, and "atBound" says so"""
     x, P = np.asarray(x, float), np.asarray(P, float)
     if p0 is None:
         x500 = percentile(x, P, 0.5) if P.min() < 0.5 < P.max() else np.median(x)
         p0 = [x500, max(1.5 * x.max(), 2 * x500), 2.0]
     model = lambda x, q: swebrec(x, q[0], q[0] + q[1], q[2])
-    (x50, dx, b), rms = _fit(model, [p0[0], p0[1] - p0[0], p0[2]], x, P, w)
+    q0 = [p0[0], p0[1] - p0[0], p0[2]]
+    (x50, dx, b), rms = _fit(model, q0, x, P, w)
+    atBound = xmaxBound is not None and not x50 + dx <= xmaxBound
+    if atBound:
+        # xmax - x50 <= xmaxBound - (the curve's x50): xmax ends near the bound
+        dxMax = xmaxBound - q0[0]
+        q0[1] = min(q0[1], 0.5 * dxMax)
+        (x50, dx, b), rms = _fit(model, q0, x, P, w, upper=[np.inf, dxMax, np.inf])
     xmax = x50 + dx
     x80 = xmax * np.exp(-np.log(xmax / x50) * 0.25 ** (1 / b))
-    return {"x50": x50, "xmax": xmax, "b": b, "x80": x80, "rms": rms}
+    return {"x50": x50, "xmax": xmax, "b": b, "x80": x80, "rms": rms, "atBound": atBound}
 
 
 # ------------------------------------------------------------------ Kuz-Ram

@@ -125,7 +125,9 @@ def fragments(case, block):
          "speed": (np.linalg.norm(fVel[loose], axis=1) * A).sum() / A.sum(),
          "cracks": read_vtp_lines(os.path.join(case, "VTK", f"cracks_{len(steps) - 1}.vtp"))}
     r["rr"] = bf.fit_rosin_rammler(xs[~lim], Pass[~lim], dP[~lim])
-    r["sw"] = bf.fit_swebrec(xs[~lim], Pass[~lim], dP[~lim])
+    # Swebrec's xmax at most the solid's diagonal (no fragment is larger)
+    r["sw"] = bf.fit_swebrec(xs[~lim], Pass[~lim], dP[~lim],
+                             xmaxBound=np.hypot(*np.ptp(pts0[:, :2], axis=0)))
     return r
 
 
