@@ -207,6 +207,8 @@ Foam::femdemSolid::femdemSolid
     deltaT_(0),
     safety_(dict.getOrDefault<scalar>("timeStepSafety", 0.5)),
     stiffestTriangle_(-1),
+    stepOmega2_(0),
+    stepXi2_(0),
     maxStrainIncrement_(dict.getOrDefault<scalar>("maxStrainIncrement", 0.1)),
     maxNodeSpeed_(dict.getOrDefault<scalar>("maxNodeSpeed", 1e5)),
     maxSpeedSqr_(0),

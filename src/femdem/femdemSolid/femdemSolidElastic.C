@@ -400,6 +400,8 @@ void Foam::femdemSolid::setStableTimeStep(const stableStep& s)
     const scalar xi = std::sqrt(s.xi2);
     deltaT_ = safety_*2/std::sqrt(s.omega2)*(std::sqrt(1 + s.xi2) - xi);
     stiffestTriangle_ = s.triangle;
+    stepOmega2_ = s.omega2;
+    stepXi2_ = s.xi2;
     // Deformation limit |L| dt <= maxStrainIncrement: fast-closing or
     // spinning triangles are resolved in time
     if (s.rate2*sqr(deltaT_) > sqr(maxStrainIncrement_))
