@@ -146,7 +146,11 @@ water    { equationOfState stiffenedGas; gamma 4.4; pInf 6e8; }
 air      { equationOfState idealGas; gamma 1.4; Cv 718; }
 alphaMin 1e-6;
 EOD
-for f in alpha rho; do sed "s/$f.products/$f.water/" water3/0/$f.products > water3/0/$f.water; done
+waterFields()  # waterFields <case>: 0/alpha.water, 0/rho.water (a trace) from the products'
+{
+    for f in alpha rho; do sed "s/$f.products/$f.water/" $1/0/$f.products > $1/0/$f.water; done
+}
+waterFields water3
 cat > water3/system/setChargeDict <<'EOD'
 FoamFile { version 2.0; format ascii; class dictionary; object setChargeDict; }
 nSample     8;
@@ -176,7 +180,7 @@ foamDictionary -entry endTime -set 2e-5 water3Par/system/controlDict > /dev/null
 (
     cd water3Pert
     rm -rf 0 && cp -r 0.orig 0
-    for f in alpha rho; do sed "s/$f.products/$f.water/" 0/$f.products > 0/$f.water; done
+    waterFields .
     sed -i 's/rho 1000;/rho 1000.0000000000001;/' system/setChargeDict
     foamDictionary -entry endTime -set 2e-5 system/controlDict > /dev/null
     setCharge > log.setCharge 2>&1 && jwlIbFoam > log.jwlIbFoam 2>&1

@@ -148,24 +148,14 @@ void Foam::femdemOutput::writeVtk
         length.append(solid.jointLength0()[j]);
     }
     writer.addLines(pts, edgeList(lines), length, "initialJointLength");
-    if (solid.jointStrength().size())
+    // A per-joint list as CellData of the broken joints' lines
+    const auto addBroken = [&](const word& name, const scalarList& all)
     {
-        scalarList w(lines.size());
-        label i = 0;
-        forAll(jn, j)
-        {
-            if (solid.jointBroken()[j]) w[i++] = solid.jointStrength()[j];
-        }
-        writer.addLineField("strengthFactor", w);
-    }
-    forAll(jointFieldValues, k)
-    {
-        const scalarList& all = jointFieldValues[k];
         if (all.size() != jn.size())
         {
             FatalErrorInFunction
-                << "joint field " << jointFieldNames[k] << " has "
-                << all.size() << " values for " << jn.size() << " joints"
+                << "joint field " << name << " has " << all.size()
+                << " values for " << jn.size() << " joints"
                 << exit(FatalError);
         }
         scalarList values(lines.size());
@@ -174,7 +164,15 @@ void Foam::femdemOutput::writeVtk
         {
             if (solid.jointBroken()[j]) values[i++] = all[j];
         }
-        writer.addLineField(jointFieldNames[k], values);
+        writer.addLineField(name, values);
+    };
+    if (solid.jointStrength().size())
+    {
+        addBroken("strengthFactor", solid.jointStrength());
+    }
+    forAll(jointFieldValues, k)
+    {
+        addBroken(jointFieldNames[k], jointFieldValues[k]);
     }
     writer.endStep();
 }
