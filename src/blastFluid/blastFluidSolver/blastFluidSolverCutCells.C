@@ -1271,13 +1271,21 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
     {
         return cRho[i] > 0 ? cRhoE[i] - 0.5*magSqr(cRhoU[i])/cRho[i] : 0;
     };
+    // Only what a cap held back is spread: a cell that takes its dE takes
+    // dE/V per unit volume, whose product with V differs from dE by
+    // round-off (spreading that residue every step changed every burnt
+    // cell by an ulp and made the whole mesh's primitives recomputed)
     scalar rest = 0;
     forAll(phi, i)
     {
         const scalar cap = 0.5*max(internal(i), scalar(0));
-        const scalar d = min(max(dE[i]/V[i], -cap), cap);
+        const scalar d0 = dE[i]/V[i];
+        const scalar d = min(max(d0, -cap), cap);
         cRhoE[i] += d;
-        rest += dE[i] - d*V[i];
+        if (d != d0)
+        {
+            rest += dE[i] - d*V[i];
+        }
     }
     // Unburnt explosive (programmed burn) does not share: its internal
     // energy is mostly chemical (q = E0/rho0), and a share of it would
@@ -1289,13 +1297,16 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
         const scalar e = max(internal(i), scalar(0));
         return F ? e*(*F)[i] : e;
     };
-    scalar total = 0;
-    forAll(phi, i)
-    {
-        total += weight(i)*V[i];
-    }
     reduce(rest, sumOp<scalar>());
-    reduce(total, sumOp<scalar>());
+    scalar total = 0;
+    if (rest != 0)
+    {
+        forAll(phi, i)
+        {
+            total += weight(i)*V[i];
+        }
+        reduce(total, sumOp<scalar>());
+    }
     if (rest != 0 && total > 0)
     {
         const scalar r = rest/total;

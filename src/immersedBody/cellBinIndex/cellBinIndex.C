@@ -36,6 +36,7 @@ Foam::cellBinIndex::cellBinIndex
 :
     origin_(Zero),
     binSize_(1, 1),
+    invBinSize_(1, 1),
     nx_(1),
     ny_(1)
 {
@@ -62,6 +63,7 @@ Foam::cellBinIndex::cellBinIndex
         ny_ = max(label(1), min(label(span.y()/binEdge) + 1, nPlaced));
         origin_ = lo;
         binSize_ = vector2D(span.x()/nx_, span.y()/ny_)*(1 + 1e-12);
+        invBinSize_ = vector2D(1/binSize_.x(), 1/binSize_.y());
     }
 
     // Two passes: count, then fill (CSR)
@@ -94,6 +96,33 @@ Foam::cellBinIndex::cellBinIndex
             {
                 binItems_[fill[j*nx_ + i]++] = p;
             }
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::cellBinIndex::countFlagged
+(
+    const UList<bool>& binFlag,
+    labelList& table
+) const
+{
+    const label w = nx_ + 1;
+    table.setSize(w*(ny_ + 1));
+    for (label i = 0; i < w; ++i)
+    {
+        table[i] = 0;
+    }
+    for (label j = 0; j < ny_; ++j)
+    {
+        label row = 0;
+        table[(j + 1)*w] = 0;
+        for (label i = 0; i < nx_; ++i)
+        {
+            row += binFlag[j*nx_ + i];
+            table[(j + 1)*w + i + 1] = table[j*w + i + 1] + row;
         }
     }
 }

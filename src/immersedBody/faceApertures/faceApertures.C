@@ -669,6 +669,9 @@ void Foam::faceApertures::integrate
         }
     }
 
+    index_.countFlagged(boundaryBin_, boundaryCount_);
+    midpointIndex_.countFlagged(unknownBin_, unknownCount_);
+
     forAll(triangles, t)
     {
         const FixedList<label, 3>& tri = triangles[t];
@@ -685,7 +688,7 @@ void Foam::faceApertures::integrate
         // The faces a boundary edge's swept box reaches, clipped over the
         // step: only where the triangle's box touches a bin with one (a
         // boundary face may be listed in other bins too: all candidates)
-        if (index_.touchesFlagged(lo, hi, boundaryBin_))
+        if (index_.touchesCounted(lo, hi, boundaryCount_))
         {
             index_.forEachCandidate
             (
@@ -704,7 +707,7 @@ void Foam::faceApertures::integrate
         // is in one bin of the midpoint index: visited once per triangle)
         const vector2D lo0(min(x0[0], min(x0[1], x0[2])));
         const vector2D hi0(max(x0[0], max(x0[1], x0[2])));
-        if (!midpointIndex_.touchesFlagged(lo0, hi0, unknownBin_))
+        if (!midpointIndex_.touchesCounted(lo0, hi0, unknownCount_))
         {
             continue;
         }

@@ -96,13 +96,21 @@ void Foam::gasView::candidateCellSizes
 {
     // The cell holding the joint's midpoint, on whichever
     // processor has it; outside the mesh the size is 0 (opens at once:
-    // there is no gas there to see it)
+    // there is no gas there to see it). Only for the joints the outline
+    // reaches (exposed_): the others cannot open (their size is left 0;
+    // the same on every processor, which all hold the whole view)
     const List<jointNodeList>& nodes = view_->topology().jointNodes();
+    const labelList& pointOfNode = view_->pointOfNode();
     const scalarField& area = cells.cellArea();
     cellSize_.setSize(candidates_.size());
     forAll(candidates_, i)
     {
         const jointNodeList& n = nodes[candidates_[i]];
+        if (!exposed_[pointOfNode[n[0]]] && !exposed_[pointOfNode[n[1]]])
+        {
+            cellSize_[i] = 0;
+            continue;
+        }
         const vector2D m = 0.25*(x[n[0]] + x[n[1]] + x[n[2]] + x[n[3]]);
         const label c = cells.findCell(m);
         cellSize_[i] = c >= 0 ? Foam::sqrt(area[c]) : 0;
@@ -149,8 +157,8 @@ const Foam::continuousView& Foam::gasView::update
     }
     if (candidates_.size())
     {
-        candidateCellSizes(x, cells);
         markExposedPoints();
+        candidateCellSizes(x, cells);
         const labelList& pointOfNode = view_->pointOfNode();
         DynamicList<label> opened;
         forAll(candidates_, i)

@@ -94,6 +94,7 @@ Foam::immersedBodyCoupling::immersedBodyCoupling
     mesh_(mesh),
     dict_(dict),
     projection_(mesh),
+    regions_(mesh.faceOwner(), mesh.faceNeighbour(), projection_),
     depth_(returnReduce(mesh.bounds().span().z(), maxOp<scalar>())),
     aperture_
     (
@@ -234,12 +235,31 @@ void Foam::immersedBodyCoupling::startStep
     setOutlineEdges(view);
     boundaryCell_.setSize(mesh_.nCells());
     addWallPieces(view);
-    markBoundaryCells(xStart_);
+    // The cells far from the outline take their region's state (one
+    // centroid test per region instead of one per cell); at a write time
+    // every cell is projected, so that the written U.solid holds the
+    // velocity of every covered cell
+    const bool byRegions = !mesh_.time().writeTime();
+    markBoundaryCells(xStart_, byRegions ? &nearCell_ : nullptr);
+    if (byRegions)
+    {
+        vector2D lo(GREAT, GREAT), hi(-GREAT, -GREAT);
+        for (const vector2D& x : xStart_)
+        {
+            lo = min(lo, x);
+            hi = max(hi, x);
+        }
+        regions_.update(nearCell_, lo, hi);
+    }
     projection_.project
     (
         xStart_, tris, vPoint_, alphaWork_, UsolidWork_, overlapsStart_,
-        &boundaryCell_
+        &boundaryCell_, byRegions ? &regions_.cellState() : nullptr
     );
+    if (byRegions)
+    {
+        regions_.fill(alphaWork_);
+    }
     copyToFields();
     areaOf(alphaWork_, solidAreaStart_);
     faceApertures::cellStatesOf(boundaryCell_, alphaWork_, cellStateStart_);
@@ -262,10 +282,18 @@ void Foam::immersedBodyCoupling::startStep
 
     // A cell's wall force goes half to the solid at the start, half to
     // the solid at the end of the step (all to the one there is)
+    // (the solid at the start of a cell its region decided has no
+    // overlap to carry a force)
+    overlapStart_.setSize(solidAreaStart_.size());
+    overlapStart_ = false;
+    for (const label c : overlapsStart_.cell)
+    {
+        overlapStart_[c] = true;
+    }
     shareStart_.setSize(solidAreaStart_.size());
     forAll(shareStart_, i)
     {
-        const bool s = solidAreaStart_[i] > 0, e = solidAreaEnd_[i] > 0;
+        const bool s = overlapStart_[i], e = solidAreaEnd_[i] > 0;
         shareStart_[i] = s && e ? 0.5 : s ? 1 : 0;
     }
 
@@ -427,18 +455,33 @@ void Foam::immersedBodyCoupling::setCellStateEnd()
 
 void Foam::immersedBodyCoupling::markBoundaryCells
 (
-    const UList<vector2D>& x
+    const UList<vector2D>& x,
+    boolList* near
 )
 {
+    // The cells whose widened boxes an edge reaches (near) are the ones
+    // clipped against it (a cheap rejection of most candidates)
     boundaryCell_ = false;
+    if (near)
+    {
+        near->setSize(boundaryCell_.size());
+        *near = false;
+    }
     for (const edge& e : outlineEdges_)
     {
-        projection_.forEachSegmentPiece
+        const vector2D& a = x[e.start()];
+        const vector2D& b = x[e.end()];
+        projection_.forEachCellNear
         (
-            x[e.start()], x[e.end()],
-            [&](const label celli, const scalar, const scalar)
+            a, b, regions_.tol(),
+            [&](const label celli)
             {
-                boundaryCell_[celli] = true;
+                if (near) (*near)[celli] = true;
+                scalar s0, s1;
+                if (projection_.clipSegment(celli, a, b, s0, s1))
+                {
+                    boundaryCell_[celli] = true;
+                }
             }
         );
     }

@@ -288,6 +288,12 @@ void Foam::solidProjection::project
         }
     }
 
+    index_.countFlagged(boundaryBin_, boundaryCount_);
+    if (known)
+    {
+        centroidIndex_->countFlagged(unknownBin_, unknownCount_);
+    }
+
     forAll(triangles, t)
     {
         const FixedList<label, 3>& tri = triangles[t];
@@ -298,16 +304,16 @@ void Foam::solidProjection::project
 
         // The cells the boundary crosses (all, without boundaryCell) are
         // clipped
-        if (index_.touchesFlagged(lo, hi, boundaryBin_))
+        if (index_.touchesCounted(lo, hi, boundaryCount_))
         {
             index_.forEachCandidate
             (
                 lo, hi,
                 [&](const label celli)
                 {
+                    if (boundaryCell && !(*boundaryCell)[celli]) return;
                     if (lastTriangle_[celli] == t) return;
                     lastTriangle_[celli] = t;
-                    if (boundaryCell && !(*boundaryCell)[celli]) return;
                     scalar area;
                     vector2D centroid;
                     overlapArea(a, b, c, celli, area, centroid);
@@ -331,7 +337,7 @@ void Foam::solidProjection::project
         if
         (
             !boundaryCell || twiceArea <= 0
-         || (known && !centroidIndex_->touchesFlagged(lo, hi, unknownBin_))
+         || (known && !centroidIndex_->touchesCounted(lo, hi, unknownCount_))
         )
         {
             continue;
@@ -487,6 +493,17 @@ bool Foam::solidProjection::clipSegment
         a, b, &cellVertices_[cellStart_[celli]],
         cellStart_[celli + 1] - cellStart_[celli], s0, s1, onLine
     );
+}
+
+
+Foam::scalar Foam::solidProjection::maxCellSize() const
+{
+    scalar s = 0;
+    forAll(cellLo_, celli)
+    {
+        s = max(s, cmptMax(cellHi_[celli] - cellLo_[celli]));
+    }
+    return s;
 }
 
 

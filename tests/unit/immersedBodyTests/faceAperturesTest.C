@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include "faceApertures.H"
 #include "solidProjection.H"
+#include "outlineRegions.H"
 #include "triangleMesh.H"
 #include "Random.H"
 #include "clockValue.H"
@@ -498,4 +499,155 @@ TEST(faceApertures, boundaryOnlyPathsEqualClippingEverywhere)
     EXPECT_LT(worstAlpha, 1e-12);
     // The full path integrates to a relative 1e-10 of the face length
     EXPECT_LT(worstCovered, 1e-9);
+}
+
+
+TEST(outlineRegions, regionsGiveEveryCellItsCentroidTestsState)
+{
+    // The coupling's start projection decides the cells far from the
+    // outline one region at a time (outlineRegions): the fractions must be
+    // those of the cell-by-cell centroid tests, bit for bit. Cases: the
+    // holed block turned and shifted, folded, on jittered grids with cells
+    // larger and smaller than the triangles, and axis-aligned on a regular
+    // grid whose lines its outer and hole-free edges lie on (a wall along
+    // a face: the round-off case of the near test)
+    label nCases = 0, nByRegion = 0, nCells = 0, nRegions = 0;
+    scalar worst = 0, worstFull = 0;
+    Random rnd(17);
+    for (const scalar jitter : {0.2, 0.0})
+    {
+        for (const label n : {20, 23, 97})
+        {
+            const grid g = jitteredGrid(n, n, jitter);
+            solidProjection proj(g.cells);
+            outlineRegions regions(g.owner, g.neighbour, proj);
+            // 0.6 x 0.4 about (0.5, 0.5): on the lines of the 20-cell grid
+            const holedBlock b = makeHoledBlock
+            (
+                vector2D(0.5, 0.5), vector2D(0.6, 0.4), 30, 20, 0.1
+            );
+            for (const scalar angle : {0.0, 0.37, -1.1, 0.2})
+            {
+                List<vector2D> x = rigidMotion
+                (
+                    b.points, angle, vector2D(0.5, 0.5),
+                    angle == 0 ? vector2D(Zero) : 0.3/n*vector2D
+                    (
+                        rnd.sample01<scalar>() - 0.5,
+                        rnd.sample01<scalar>() - 0.5
+                    )
+                );
+                if (angle == 0.2) x[40] += vector2D(0.01, -0.05);
+                DynamicList<edge> outline(b.boundary);
+                vector2D lo(GREAT, GREAT), hi(-GREAT, -GREAT);
+                for (const vector2D& p : x)
+                {
+                    lo = min(lo, p);
+                    hi = max(hi, p);
+                }
+                for (const FixedList<label, 3>& t : b.triangles)
+                {
+                    if (polygonClipping::cross(x[t[0]], x[t[1]], x[t[2]]) <= 0)
+                    {
+                        for (label k = 0; k < 3; ++k)
+                        {
+                            outline.append(edge(t[k], t[(k + 1) % 3]));
+                        }
+                    }
+                }
+                // As immersedBodyCoupling::markBoundaryCells
+                boolList cut(proj.nCells(), false), near(proj.nCells(), false);
+                for (const edge& e : outline)
+                {
+                    const vector2D& p = x[e.start()];
+                    const vector2D& q = x[e.end()];
+                    proj.forEachCellNear
+                    (
+                        p, q, regions.tol(),
+                        [&](const label c)
+                        {
+                            near[c] = true;
+                            scalar s0, s1;
+                            if (proj.clipSegment(c, p, q, s0, s1)) cut[c] = true;
+                        }
+                    );
+                }
+                const List<vector2D> v(x.size(), vector2D(1, 2));
+                scalarField alphaAll, alphaCells, alphaRegions;
+                List<vector2D> U;
+                solidOverlaps overlaps;
+                proj.project(x, b.triangles, v, alphaAll, U, overlaps);
+                proj.project(x, b.triangles, v, alphaCells, U, overlaps, &cut);
+                regions.update(near, lo, hi);
+                proj.project
+                (
+                    x, b.triangles, v, alphaRegions, U, overlaps, &cut,
+                    &regions.cellState()
+                );
+                regions.fill(alphaRegions);
+                forAll(alphaCells, c)
+                {
+                    worst = max(worst, mag(alphaRegions[c] - alphaCells[c]));
+                    worstFull = max(worstFull, mag(alphaRegions[c] - alphaAll[c]));
+                    if (regions.cellState()[c] == 0) ++nByRegion;
+                }
+                nCells += proj.nCells();
+                nRegions += regions.nRegions();
+                ++nCases;
+            }
+        }
+    }
+    RecordProperty("cases", nCases);
+    RecordProperty
+    (
+        "cellsDecidedByTheirRegion",
+        std::to_string(nByRegion) + " of " + std::to_string(nCells)
+    );
+    RecordProperty("regions", nRegions);
+    RecordProperty("maxAlphaDifferenceRegionsVsCentroidTests", sci(worst));
+    RecordProperty("maxAlphaDifferenceRegionsVsClippingAll", sci(worstFull));
+    EXPECT_EQ(worst, 0);
+    EXPECT_LT(worstFull, 1e-12);
+    // The path is taken: most cells are decided by their region
+    EXPECT_GT(nByRegion, nCells/2);
+}
+
+
+TEST(cellBinIndex, summedAreaTableAgreesWithTheBinWalk)
+{
+    // touchesCounted (four lookups in the flags' summed-area table) against
+    // touchesFlagged (the walk over the box's bins), random flags and boxes
+    // (inside, straddling and outside the grid)
+    const grid g = jitteredGrid(41, 29);
+    const cellBinIndex index(g.cells.first, g.cells.second);
+    Random rnd(5);
+    boolList flag(index.nBins());
+    labelList table;
+    label nTrue = 0, nQueries = 0, nDiffer = 0;
+    for (const scalar density : {0.0, 0.01, 0.2, 1.0})
+    {
+        forAll(flag, b) flag[b] = rnd.sample01<scalar>() < density;
+        index.countFlagged(flag, table);
+        for (label q = 0; q < 4000; ++q)
+        {
+            const vector2D a
+            (
+                1.4*rnd.sample01<scalar>() - 0.2, 1.4*rnd.sample01<scalar>() - 0.2
+            );
+            const vector2D d
+            (
+                0.3*rnd.sample01<scalar>(), 0.3*rnd.sample01<scalar>()
+            );
+            const bool walk = index.touchesFlagged(a, a + d, flag);
+            if (walk != index.touchesCounted(a, a + d, table)) ++nDiffer;
+            nTrue += walk;
+            ++nQueries;
+        }
+    }
+    RecordProperty("queries", nQueries);
+    RecordProperty("touching", nTrue);
+    RecordProperty("differ", nDiffer);
+    EXPECT_EQ(nDiffer, 0);
+    EXPECT_GT(nTrue, nQueries/4);
+    EXPECT_LT(nTrue, nQueries);
 }
