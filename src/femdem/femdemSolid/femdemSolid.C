@@ -209,6 +209,7 @@ Foam::femdemSolid::femdemSolid
     stiffestTriangle_(-1),
     stepOmega2_(0),
     stepXi2_(0),
+    stepRate2_(0),
     maxStrainIncrement_(dict.getOrDefault<scalar>("maxStrainIncrement", 0.1)),
     maxNodeSpeed_(dict.getOrDefault<scalar>("maxNodeSpeed", 1e5)),
     maxSpeedSqr_(0),
@@ -218,7 +219,8 @@ Foam::femdemSolid::femdemSolid
     jointStored0_(0),
     lastDt_(0),
     jointsDamaged_(false),
-    jointError_(0)
+    jointError_(0),
+    halo_(nullptr)
 {
     // Before any product of the values: 1e300 would overflow to inf
     caseChecks::checkNumbers(dict);
@@ -412,6 +414,13 @@ void Foam::femdemSolid::step(const scalar dt)
     time_ = tNew;
     lastDt_ = dt;
     ++step_;
+
+    // A partitioned solid: halo nodes from their owners, the stable step
+    // and the speed check global, so that every rank sub-steps alike
+    if (halo_)
+    {
+        halo_->afterStep(*this);
+    }
 
     if (trackEnergy_ && !jointsDamaged_)
     {

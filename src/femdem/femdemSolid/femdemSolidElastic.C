@@ -397,16 +397,23 @@ void Foam::femdemSolid::setStableTimeStep(const stableStep& s)
             << ", damping ratio^2 = " << s.xi2 << " (a degenerate or"
             << " non-finite triangle)" << exit(FatalError);
     }
-    const scalar xi = std::sqrt(s.xi2);
-    deltaT_ = safety_*2/std::sqrt(s.omega2)*(std::sqrt(1 + s.xi2) - xi);
     stiffestTriangle_ = s.triangle;
     stepOmega2_ = s.omega2;
     stepXi2_ = s.xi2;
+    stepRate2_ = s.rate2;
+    setStableTimeStep();
+}
+
+
+void Foam::femdemSolid::setStableTimeStep()
+{
+    const scalar xi = std::sqrt(stepXi2_);
+    deltaT_ = safety_*2/std::sqrt(stepOmega2_)*(std::sqrt(1 + stepXi2_) - xi);
     // Deformation limit |L| dt <= maxStrainIncrement: fast-closing or
     // spinning triangles are resolved in time
-    if (s.rate2*sqr(deltaT_) > sqr(maxStrainIncrement_))
+    if (stepRate2_*sqr(deltaT_) > sqr(maxStrainIncrement_))
     {
-        deltaT_ = maxStrainIncrement_/std::sqrt(s.rate2);
+        deltaT_ = maxStrainIncrement_/std::sqrt(stepRate2_);
     }
 }
 

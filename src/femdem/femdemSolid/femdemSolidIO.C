@@ -250,6 +250,41 @@ void Foam::femdemSolid::writeState(Ostream& os) const
 }
 
 
+void Foam::femdemSolid::setState
+(
+    List<vector2D>& x,
+    List<vector2D>& v,
+    scalarList& damage,
+    boolList& broken,
+    const scalar time,
+    const label timeIndex
+)
+{
+    if
+    (
+        x.size() != x_.size() || v.size() != v_.size()
+     || damage.size() != damage_.size() || broken.size() != broken_.size()
+    )
+    {
+        FatalErrorInFunction
+            << "state of " << x.size() << ", " << v.size() << " nodes and "
+            << damage.size() << ", " << broken.size() << " joints for a"
+            << " solid of " << x_.size() << " nodes and " << broken_.size()
+            << " joints" << exit(FatalError);
+    }
+    x_.transfer(x);
+    v_.transfer(v);
+    damage_.transfer(damage);
+    broken_.transfer(broken);
+    nBroken_ = 0;
+    forAll(broken_, j) if (broken_[j]) ++nBroken_;
+    markFreeEdges();
+    view_.clear();
+    time_ = time;
+    step_ = timeIndex;
+}
+
+
 void Foam::femdemSolid::readState(const dictionary& dict)
 {
     List<vector2D> x = dict.get<List<vector2D>>("x");
@@ -270,17 +305,11 @@ void Foam::femdemSolid::readState(const dictionary& dict)
             << broken.size() << " for " << broken_.size() << " joints"
             << exit(FatalIOError);
     }
-    x_.transfer(x);
-    v_.transfer(v);
-    damage_.transfer(damage);
-    broken_.transfer(broken);
-    nBroken_ = 0;
-    forAll(broken_, j) if (broken_[j]) ++nBroken_;
-    markFreeEdges();
-    view_.clear();
-
-    time_ = dict.get<scalar>("time");
-    step_ = dict.get<label>("timeIndex");
+    setState
+    (
+        x, v, damage, broken, dict.get<scalar>("time"),
+        dict.get<label>("timeIndex")
+    );
     const scalarList acc = dict.get<scalarList>("energyAccounts");
     if (acc.size() != 8 && acc.size() != 10)
     {

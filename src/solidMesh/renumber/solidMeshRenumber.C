@@ -63,6 +63,38 @@ void triangleGraph
     }
 }
 
+// METIS parts of the triangle graph: recursive bisection or k-way (METIS's
+// fixed default seed: the same on every rank and every run)
+std::vector<idx_t> metisParts
+(
+    const triangleMesh& mesh,
+    const label nParts,
+    const bool recursive
+)
+{
+    std::vector<idx_t> xadj, adjncy;
+    triangleGraph(mesh, xadj, adjncy);
+    idx_t n = mesh.nTriangles(), np = nParts, nCon = 1, cut = 0;
+    std::vector<idx_t> part(n);
+    idx_t options[METIS_NOPTIONS];
+    METIS_SetDefaultOptions(options);
+    options[METIS_OPTION_NUMBERING] = 0;
+    const int status =
+        (recursive ? METIS_PartGraphRecursive : METIS_PartGraphKway)
+        (
+            &n, &nCon, xadj.data(), adjncy.data(), nullptr, nullptr, nullptr,
+            &np, nullptr, nullptr, options, &cut, part.data()
+        );
+    if (status != METIS_OK)
+    {
+        FatalErrorInFunction
+            << (recursive ? "METIS_PartGraphRecursive" : "METIS_PartGraphKway")
+            << " failed with status " << status << " on " << n
+            << " triangles" << exit(FatalError);
+    }
+    return part;
+}
+
 } // End anonymous namespace
 
 
@@ -74,32 +106,15 @@ Foam::labelList Foam::solidMeshRenumber::triangleOrder
     const label blockSize
 )
 {
-    std::vector<idx_t> xadj, adjncy;
-    triangleGraph(mesh, xadj, adjncy);
-    idx_t n = mesh.nTriangles();
-    idx_t nParts = n/max(blockSize, label(1));
+    const label n = mesh.nTriangles();
+    const label nParts = n/max(blockSize, label(1));
     if (nParts < 2)
     {
         return identity(n);
     }
 
     // Recursive bisection: parts whose indices are close are close in space
-    idx_t nCon = 1, cut = 0;
-    std::vector<idx_t> part(n);
-    idx_t options[METIS_NOPTIONS];
-    METIS_SetDefaultOptions(options);
-    options[METIS_OPTION_NUMBERING] = 0;
-    const int status = METIS_PartGraphRecursive
-    (
-        &n, &nCon, xadj.data(), adjncy.data(), nullptr, nullptr, nullptr,
-        &nParts, nullptr, nullptr, options, &cut, part.data()
-    );
-    if (status != METIS_OK)
-    {
-        FatalErrorInFunction
-            << "METIS_PartGraphRecursive failed with status " << status
-            << " on " << n << " triangles" << exit(FatalError);
-    }
+    const std::vector<idx_t> part = metisParts(mesh, nParts, true);
 
     // Triangles by part, in their old order within a part
     labelList count(nParts + 1, Zero);
@@ -117,6 +132,137 @@ Foam::labelList Foam::solidMeshRenumber::triangleOrder
         order[count[part[t]]++] = t;
     }
     return order;
+}
+
+
+Foam::labelList Foam::solidMeshRenumber::partition
+(
+    const triangleMesh& mesh,
+    const label nParts
+)
+{
+    const label n = mesh.nTriangles();
+    if (nParts < 2 || n < 2)
+    {
+        return labelList(n, Zero);
+    }
+    if (n < nParts)
+    {
+        FatalErrorInFunction
+            << "cannot split " << n << " triangles into " << nParts
+            << " parts" << exit(FatalError);
+    }
+    const std::vector<idx_t> part = metisParts(mesh, nParts, false);
+    labelList result(n);
+    forAll(result, t)
+    {
+        result[t] = part[t];
+    }
+    return result;
+}
+
+
+Foam::triangleMesh Foam::solidMeshRenumber::subset
+(
+    const triangleMesh& mesh,
+    const labelUList& triangles
+)
+{
+    labelList newPoint(mesh.nPoints(), -1);
+    label nPoints = 0;
+    List<triangleVertices> tris(triangles.size());
+    labelList materials(triangles.size());
+    // Times each kept triangle uses an edge: 2 for an interior edge
+    EdgeMap<label> edgeUse(3*triangles.size());
+    forAll(triangles, t)
+    {
+        const label old = triangles[t];
+        if (old < 0 || old >= mesh.nTriangles() || (t && old <= triangles[t-1]))
+        {
+            FatalErrorInFunction
+                << "triangle " << old << " at " << t << ": the subset must"
+                << " hold ascending triangles of the " << mesh.nTriangles()
+                << " of the mesh" << exit(FatalError);
+        }
+        const triangleVertices& v = mesh.triangles()[old];
+        for (label k = 0; k < 3; ++k)
+        {
+            label& p = newPoint[v[k]];
+            if (p < 0)
+            {
+                p = nPoints++;
+            }
+            tris[t][k] = p;
+            ++edgeUse(edge(v[k], v[(k + 1) % 3]), 0);
+        }
+        materials[t] = mesh.triangleMaterials()[old];
+    }
+    List<vector2D> points(nPoints);
+    forAll(newPoint, i)
+    {
+        if (newPoint[i] >= 0)
+        {
+            points[newPoint[i]] = mesh.points()[i];
+        }
+    }
+    auto renumbered = [&](const edge& e)
+    {
+        return edge(newPoint[e[0]], newPoint[e[1]]);
+    };
+    List<edgeList> patchEdges(mesh.patchEdges().size());
+    forAll(patchEdges, patchi)
+    {
+        DynamicList<edge> kept;
+        for (const edge& e : mesh.patchEdges()[patchi])
+        {
+            if (edgeUse.found(e))
+            {
+                kept.append(renumbered(e));
+            }
+        }
+        patchEdges[patchi].transfer(kept);
+    }
+    List<triangleJointSet> jointSets(mesh.jointSets());
+    for (triangleJointSet& js : jointSets)
+    {
+        DynamicList<edge> edges;
+        DynamicList<scalar> strength, friction;
+        forAll(js.edges, i)
+        {
+            const auto iter = edgeUse.cfind(js.edges[i]);
+            if (!iter.found() || *iter != 2)
+            {
+                continue;
+            }
+            edges.append(renumbered(js.edges[i]));
+            if (js.strengthFactor.size())
+            {
+                strength.append(js.strengthFactor[i]);
+            }
+            if (js.frictionAngle.size())
+            {
+                friction.append(js.frictionAngle[i]);
+            }
+        }
+        // A per-edge list stays a per-edge list (empty means 'uniform')
+        const bool hadStrength = js.strengthFactor.size();
+        const bool hadFriction = js.frictionAngle.size();
+        js.edges.transfer(edges);
+        js.strengthFactor.transfer(strength);
+        js.frictionAngle.transfer(friction);
+        if (js.edges.empty() && (hadStrength || hadFriction))
+        {
+            js.strengthFactor.clear();
+            js.frictionAngle.clear();
+        }
+    }
+    triangleMesh result
+    (
+        points, tris, materials, mesh.materials(), mesh.patchNames(),
+        patchEdges
+    );
+    result.setJointSets(jointSets);
+    return result;
 }
 
 

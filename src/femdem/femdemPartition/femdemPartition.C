@@ -1,0 +1,654 @@
+/*---------------------------------------------------------------------------*\
+  jwlIbFoam: blast in fractured solids, built on OpenFOAM v1912
+-------------------------------------------------------------------------------
+License
+    GNU General Public License v3 or later (as OpenFOAM).
+\*---------------------------------------------------------------------------*/
+
+#include "femdemPartition.H"
+#include "solidMeshRenumber.H"
+#include "Pstream.H"
+#include "PstreamBuffers.H"
+#include "PstreamReduceOps.H"
+#include "DynamicList.H"
+#include "ListOps.H"
+#include <algorithm>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(femdemPartition, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+using namespace Foam;
+
+// Message tag of the per-step exchange
+constexpr int haloTag = 4711;
+
+struct box
+{
+    vector2D lo, hi;
+};
+
+// Box of triangle t of the nodes x (3 per triangle)
+box triangleBox(const UList<vector2D>& x, const label t)
+{
+    box b{x[3*t], x[3*t]};
+    for (label k = 1; k < 3; ++k)
+    {
+        b.lo = min(b.lo, x[3*t + k]);
+        b.hi = max(b.hi, x[3*t + k]);
+    }
+    return b;
+}
+
+scalar longestEdge(const triangleMesh& mesh)
+{
+    scalar l = 0;
+    for (const triangleVertices& v : mesh.triangles())
+    {
+        for (label k = 0; k < 3; ++k)
+        {
+            l = max(l, mag(mesh.points()[v[(k + 1) % 3]] - mesh.points()[v[k]]));
+        }
+    }
+    return l;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::labelList Foam::femdemPartition::haloTriangles
+(
+    const UList<vector2D>& x
+) const
+{
+    const triangleMesh& mesh = globalMesh_;
+    const labelList& owner = owner_;
+    const label me = Pstream::myProcNo();
+    const List<triangleVertices>& tris = mesh.triangles();
+    const label nTri = tris.size();
+    List<bool> inHalo(nTri, false);
+
+    // Vertex neighbours: the joints of the owned triangles and the fan of a
+    // patch vertex (femdemSolid constrains every node at a patch vertex)
+    labelList pointStart(mesh.nPoints() + 1, Zero);
+    for (const triangleVertices& v : tris)
+    {
+        for (label k = 0; k < 3; ++k) ++pointStart[v[k] + 1];
+    }
+    for (label p = 0; p < mesh.nPoints(); ++p)
+    {
+        pointStart[p + 1] += pointStart[p];
+    }
+    labelList pointTris(pointStart[mesh.nPoints()]);
+    {
+        labelList fill(SubList<label>(pointStart, mesh.nPoints()));
+        forAll(tris, t)
+        {
+            for (label k = 0; k < 3; ++k) pointTris[fill[tris[t][k]]++] = t;
+        }
+    }
+    forAll(tris, t)
+    {
+        if (owner[t] != me) continue;
+        for (label k = 0; k < 3; ++k)
+        {
+            const label p = tris[t][k];
+            for (label i = pointStart[p]; i < pointStart[p + 1]; ++i)
+            {
+                inHalo[pointTris[i]] = true;
+            }
+        }
+    }
+
+    // Contact range: boxes within haloWidth (in x and in y) of an owned
+    // triangle's box. Owned triangles binned by centroid in cells of
+    // haloWidth + the largest box extent: a partner's centroid lies in the
+    // 3 x 3 cells around the candidate's
+    List<box> boxes(nTri);
+    box all{vector2D(GREAT, GREAT), vector2D(-GREAT, -GREAT)};
+    scalar extent = 0;
+    forAll(tris, t)
+    {
+        boxes[t] = triangleBox(x, t);
+        all.lo = min(all.lo, boxes[t].lo);
+        all.hi = max(all.hi, boxes[t].hi);
+        extent = max(extent, cmptMax(boxes[t].hi - boxes[t].lo));
+    }
+    scalar cs = haloWidth_ + extent;
+    const vector2D span = all.hi - all.lo;
+    // At most about 4 cells per triangle (a halo far smaller than the mesh)
+    while ((span.x()/cs + 1)*(span.y()/cs + 1) > 4*nTri + 16) cs *= 2;
+    const label nx = label(span.x()/cs) + 1, ny = label(span.y()/cs) + 1;
+    auto cellOf = [&](const label t, label& ix, label& iy)
+    {
+        const vector2D c = 0.5*(boxes[t].lo + boxes[t].hi) - all.lo;
+        ix = min(label(c.x()/cs), nx - 1);
+        iy = min(label(c.y()/cs), ny - 1);
+    };
+    labelList cellStart(nx*ny + 1, Zero);
+    forAll(tris, t)
+    {
+        if (owner[t] != me) continue;
+        label ix, iy;
+        cellOf(t, ix, iy);
+        ++cellStart[iy*nx + ix + 1];
+    }
+    for (label c = 0; c < nx*ny; ++c) cellStart[c + 1] += cellStart[c];
+    labelList cellTris(cellStart[nx*ny]);
+    {
+        labelList fill(SubList<label>(cellStart, nx*ny));
+        forAll(tris, t)
+        {
+            if (owner[t] != me) continue;
+            label ix, iy;
+            cellOf(t, ix, iy);
+            cellTris[fill[iy*nx + ix]++] = t;
+        }
+    }
+    forAll(tris, t)
+    {
+        if (owner[t] == me || inHalo[t]) continue;
+        label ix, iy;
+        cellOf(t, ix, iy);
+        const box& a = boxes[t];
+        for (label jy = max(iy - 1, 0); jy <= min(iy + 1, ny - 1); ++jy)
+        {
+            for (label jx = max(ix - 1, 0); jx <= min(ix + 1, nx - 1); ++jx)
+            {
+                const label c = jy*nx + jx;
+                for (label i = cellStart[c]; i < cellStart[c + 1]; ++i)
+                {
+                    const box& b = boxes[cellTris[i]];
+                    const vector2D gap =
+                        max(a.lo - b.hi, b.lo - a.hi);
+                    if (gap.x() <= haloWidth_ && gap.y() <= haloWidth_)
+                    {
+                        inHalo[t] = true;
+                        break;
+                    }
+                }
+                if (inHalo[t]) break;
+            }
+            if (inHalo[t]) break;
+        }
+    }
+
+    DynamicList<label> halo;
+    forAll(tris, t)
+    {
+        if (inHalo[t] && owner[t] != me) halo.append(t);
+    }
+    labelList result;
+    result.transfer(halo);
+    return result;
+}
+
+
+void Foam::femdemPartition::setExchange()
+{
+    const labelList& owner = owner_;
+    const label me = Pstream::myProcNo();
+    const label nProcs = Pstream::nProcs();
+    labelList globalToLocal(nGlobal_, -1);
+    forAll(globalTriangle_, t)
+    {
+        globalToLocal[globalTriangle_[t]] = t;
+    }
+
+    // What each rank needs from each owner (global indices, ascending)
+    List<DynamicList<label>> need(nProcs);
+    List<DynamicList<label>> recv(nProcs);
+    forAll(globalTriangle_, t)
+    {
+        if (owned_[t]) continue;
+        const label g = globalTriangle_[t];
+        need[owner[g]].append(g);
+        recv[owner[g]].append(t);
+    }
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    for (label proc = 0; proc < nProcs; ++proc)
+    {
+        if (proc == me) continue;
+        UOPstream os(proc, pBufs);
+        os << labelList(need[proc]);
+    }
+    pBufs.finishedSends();
+
+    DynamicList<label> procs;
+    DynamicList<labelList> sends, recvs;
+    for (label proc = 0; proc < nProcs; ++proc)
+    {
+        if (proc == me) continue;
+        UIPstream is(proc, pBufs);
+        labelList wanted(is);
+        for (label& g : wanted)
+        {
+            const label t = globalToLocal[g];
+            if (t < 0 || !owned_[t])
+            {
+                FatalErrorInFunction
+                    << "rank " << proc << " asks rank " << me
+                    << " for triangle " << g << ", which it does not own"
+                    << exit(FatalError);
+            }
+            g = t;
+        }
+        if (wanted.size() || recv[proc].size())
+        {
+            procs.append(proc);
+            sends.append(wanted);
+            recvs.append(labelList(recv[proc]));
+        }
+    }
+    procs_.transfer(procs);
+    sendTriangles_.transfer(sends);
+    recvTriangles_.transfer(recvs);
+    sendBuf_.setSize(procs_.size());
+    recvBuf_.setSize(procs_.size());
+    forAll(procs_, i)
+    {
+        sendBuf_[i].setSize(6*sendTriangles_[i].size());
+        recvBuf_[i].setSize(6*recvTriangles_[i].size());
+    }
+}
+
+
+Foam::dictionary Foam::femdemPartition::localDict
+(
+    const dictionary& dict
+) const
+{
+    dictionary local(dict);
+    if (!dict.isDict("boundaryConditions"))
+    {
+        return local;
+    }
+    dictionary& bcs = local.subDict("boundaryConditions");
+    for (const word& key : dict.subDict("boundaryConditions").toc())
+    {
+        const label patchi = mesh_.findPatch(key);
+        // An unknown patch stays: the local solid reports it
+        if (patchi >= 0 && mesh_.patchEdges()[patchi].empty())
+        {
+            bcs.remove(key);
+        }
+    }
+    return local;
+}
+
+
+Foam::scalar Foam::femdemPartition::maxDisplacement() const
+{
+    const List<vector2D>& x = solid_->x();
+    scalar d2 = 0;
+    forAll(owned_, t)
+    {
+        if (!owned_[t]) continue;
+        for (label k = 0; k < 3; ++k)
+        {
+            d2 = max(d2, magSqr(x[3*t + k] - x0_[3*t + k]));
+        }
+    }
+    return returnReduce(std::sqrt(d2), maxOp<scalar>());
+}
+
+
+void Foam::femdemPartition::build(const UList<vector2D>& x)
+{
+    // Owned and halo triangles in ascending global order
+    const label me = Pstream::myProcNo();
+    const labelList halo = haloTriangles(x);
+    globalTriangle_.setSize
+    (
+        halo.size() + std::count(owner_.begin(), owner_.end(), me)
+    );
+    owned_.setSize(globalTriangle_.size());
+    label t = 0, h = 0;
+    forAll(owner_, g)
+    {
+        const bool mine = owner_[g] == me;
+        const bool inHalo = h < halo.size() && halo[h] == g;
+        if (!mine && !inHalo) continue;
+        if (inHalo) ++h;
+        globalTriangle_[t] = g;
+        owned_[t] = mine;
+        ++t;
+    }
+    nOwned_ = std::count(owned_.begin(), owned_.end(), true);
+
+    mesh_ = solidMeshRenumber::subset(globalMesh_, globalTriangle_);
+    solid_.reset(new femdemSolid(mesh_, localDict(dict_)));
+    setExchange();
+    x0_ = solid_->x();
+    moveBound_ = 0;
+    tLast_ = solid_->time();
+    solid_->setHaloExchange(this);
+}
+
+
+void Foam::femdemPartition::rebuild()
+{
+    // The state, global, from the owners
+    const List<vector2D> X = gatherNodes(solid_->x());
+    const List<vector2D> V = gatherNodes(solid_->v());
+    const scalarList damage = gatherJoints(solid_->jointDamage());
+    scalarList broken(solid_->nJoints());
+    forAll(broken, j)
+    {
+        broken[j] = solid_->jointBroken()[j];
+    }
+    broken = gatherJoints(broken);
+    const scalar time = solid_->time();
+    const label timeIndex = solid_->timeIndex();
+    const scalar deltaT = solid_->stableTimeStep();
+
+    // New halo and local solid at the present positions, with the state
+    build(X);
+    const label n = globalTriangle_.size();
+    List<vector2D> x(3*n), v(3*n);
+    forAll(globalTriangle_, t)
+    {
+        for (label k = 0; k < 3; ++k)
+        {
+            x[3*t + k] = X[3*globalTriangle_[t] + k];
+            v[3*t + k] = V[3*globalTriangle_[t] + k];
+        }
+    }
+    const jointTopology& topo = solid_->topology();
+    scalarList d(topo.nJoints());
+    boolList b(topo.nJoints());
+    forAll(d, j)
+    {
+        const label g = globalTopo_.edgeJoint()
+        [
+            3*globalTriangle_[topo.jointTriangleA()[j]] + topo.jointEdgeA()[j]
+        ];
+        d[j] = damage[g];
+        b[j] = broken[g] != 0;
+    }
+    solid_->setState(x, v, d, b, time, timeIndex);
+    solid_->restoreStableTimeStep(deltaT);
+    x0_ = solid_->x();
+    tLast_ = time;
+    rebuild_ = false;
+    ++nRebuilds_;
+    if (debug)
+    {
+        Pout<< "femdemPartition: halo rebuilt at time " << time << ": "
+            << nOwned_ << " owned, " << nHalo() << " halo triangles" << endl;
+    }
+}
+
+
+Foam::scalar Foam::femdemPartition::makeStepGlobal(femdemSolid& solid)
+{
+    // Each a largest over triangles or nodes: the global value is the
+    // largest over the ranks (as min of the negatives: MPI's own reduction)
+    FixedList<scalar, 4> d = stepData(solid);
+    for (scalar& v : d)
+    {
+        v = -v;
+        reduce(v, minOp<scalar>());
+        v = -v;
+    }
+    setStepData(solid, d);
+    return d[3];
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::femdemPartition::femdemPartition
+(
+    const triangleMesh& mesh,
+    const dictionary& dict,
+    const labelList& owner
+)
+:
+    haloWidth_
+    (
+        dict.subOrEmptyDict("partition").getOrDefault<scalar>
+        (
+            "haloWidth", 2*longestEdge(mesh)
+        )
+    ),
+    nOwned_(0),
+    nGlobal_(mesh.nTriangles()),
+    globalMesh_(mesh),
+    globalTopo_(mesh),
+    owner_(owner),
+    dict_(dict),
+    moveBound_(0),
+    tLast_(0),
+    nChecks_(0),
+    nRebuilds_(0),
+    rebuild_(false)
+{
+    if (!(haloWidth_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'partition.haloWidth' must be positive, got "
+            << haloWidth_ << exit(FatalIOError);
+    }
+    if (owner.size() != nGlobal_)
+    {
+        FatalErrorInFunction
+            << owner.size() << " owners for " << nGlobal_ << " triangles"
+            << exit(FatalError);
+    }
+    for (const label o : owner)
+    {
+        if (o < 0 || o >= Pstream::nProcs())
+        {
+            FatalErrorInFunction
+                << "owner rank " << o << " outside 0.." << Pstream::nProcs() - 1
+                << exit(FatalError);
+        }
+    }
+
+    // The nodes at the mesh's points
+    List<vector2D> x(3*nGlobal_);
+    forAll(mesh.triangles(), t)
+    {
+        for (label k = 0; k < 3; ++k)
+        {
+            x[3*t + k] = mesh.points()[mesh.triangles()[t][k]];
+        }
+    }
+    build(x);
+
+    // The stable step of the start, global from the start
+    makeStepGlobal(*solid_);
+}
+
+
+Foam::femdemPartition::femdemPartition
+(
+    const triangleMesh& mesh,
+    const dictionary& dict
+)
+:
+    femdemPartition
+    (
+        mesh,
+        dict,
+        solidMeshRenumber::partition(mesh, Pstream::nProcs())
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::femdemPartition::~femdemPartition()
+{
+    if (solid_.valid())
+    {
+        solid_->setHaloExchange(nullptr);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::femdemPartition::bytesPerStep() const
+{
+    label b = 0;
+    for (const List<vector2D>& buf : sendBuf_)
+    {
+        b += buf.byteSize();
+    }
+    return b;
+}
+
+
+Foam::label Foam::femdemPartition::advance(const scalar interval)
+{
+    const label n = solid_->advance(interval);
+    if (rebuild_)
+    {
+        rebuild();
+    }
+    return n;
+}
+
+
+Foam::List<Foam::vector2D> Foam::femdemPartition::gatherNodes
+(
+    const UList<vector2D>& local
+) const
+{
+    // Every entry has exactly one contributor: x + 0 = x, bitwise
+    List<vector2D> x(3*nGlobal_, Zero);
+    forAll(globalTriangle_, t)
+    {
+        if (!owned_[t]) continue;
+        for (label k = 0; k < 3; ++k)
+        {
+            x[3*globalTriangle_[t] + k] = local[3*t + k];
+        }
+    }
+    Pstream::listCombineGather(x, plusEqOp<vector2D>());
+    Pstream::listCombineScatter(x);
+    return x;
+}
+
+
+Foam::scalarList Foam::femdemPartition::gatherJoints
+(
+    const UList<scalar>& local
+) const
+{
+    // From the owner of the joint's first triangle (which holds the joint:
+    // its other triangle shares a vertex with it); one contributor each
+    scalarList values(globalTopo_.nJoints(), Zero);
+    const jointTopology& topo = solid_->topology();
+    forAll(local, j)
+    {
+        const label tA = topo.jointTriangleA()[j];
+        const label g =
+            globalTopo_.edgeJoint()[3*globalTriangle_[tA] + topo.jointEdgeA()[j]];
+        if (owned_[tA] && globalTopo_.jointTriangleA()[g] == globalTriangle_[tA])
+        {
+            values[g] = local[j];
+        }
+    }
+    Pstream::listCombineGather(values, plusEqOp<scalar>());
+    Pstream::listCombineScatter(values);
+    return values;
+}
+
+
+void Foam::femdemPartition::afterStep(femdemSolid& solid)
+{
+    List<vector2D>& x = solid.xRef();
+    List<vector2D>& v = solid.vRef();
+
+    // Halo nodes from their owners: receives posted first, sends, wait
+    const label start = UPstream::nRequests();
+    forAll(procs_, i)
+    {
+        if (recvBuf_[i].size())
+        {
+            UIPstream::read
+            (
+                UPstream::commsTypes::nonBlocking, procs_[i],
+                reinterpret_cast<char*>(recvBuf_[i].data()),
+                recvBuf_[i].byteSize(), haloTag
+            );
+        }
+    }
+    forAll(procs_, i)
+    {
+        if (sendBuf_[i].empty()) continue;
+        vector2D* buf = sendBuf_[i].data();
+        for (const label t : sendTriangles_[i])
+        {
+            for (label k = 0; k < 3; ++k)
+            {
+                *buf++ = x[3*t + k];
+                *buf++ = v[3*t + k];
+            }
+        }
+        UOPstream::write
+        (
+            UPstream::commsTypes::nonBlocking, procs_[i],
+            reinterpret_cast<const char*>(sendBuf_[i].cdata()),
+            sendBuf_[i].byteSize(), haloTag
+        );
+    }
+    UPstream::waitRequests(start);
+    forAll(procs_, i)
+    {
+        const vector2D* buf = recvBuf_[i].cdata();
+        for (const label t : recvTriangles_[i])
+        {
+            for (label k = 0; k < 3; ++k)
+            {
+                x[3*t + k] = *buf++;
+                v[3*t + k] = *buf++;
+            }
+        }
+    }
+
+    // The same step and the same divergence check on every rank
+    const scalar s2 = makeStepGlobal(solid);
+
+    // The halo holds while nothing moved by haloWidth/2; it is rebuilt
+    // from haloWidth/4 on: a cheap bound first (the largest speed times
+    // the step), the exact check after it
+    const scalar h = solid.time() - tLast_;
+    tLast_ = solid.time();
+    moveBound_ += h*std::sqrt(s2);
+    if (moveBound_ > (rebuild_ ? 0.5 : 0.25)*haloWidth_)
+    {
+        ++nChecks_;
+        const scalar d = maxDisplacement();
+        if (d > 0.5*haloWidth_)
+        {
+            FatalErrorInFunction
+                << "a node of the partitioned FEMDEM solid moved " << d
+                << " m within one interval of advance() (at time "
+                << solid.time() << "), more than half the halo width "
+                << haloWidth_ << " m, before the halo could be rebuilt:"
+                << " a wider halo (entry 'partition.haloWidth' of"
+                << " constant/femdemProperties) or shorter intervals"
+                << exit(FatalError);
+        }
+        rebuild_ = rebuild_ || d > 0.25*haloWidth_;
+        moveBound_ = d;
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,69 @@
+#!/bin/bash
+# testCores: 2   (tests/run.py: runs only with 2 cores free: 2 and 3 MPI ranks)
+# The FEMDEM solid partitioned over MPI ranks (femdemPartition, issue 15):
+# owned triangles + a redundant halo, halo nodes exchanged after every
+# sub-step, the stable step made global, the halo rebuilt as things move.
+# femdemPartitionCheck runs a 0.2 m x 0.1 m plate on every rank twice, whole
+# (serial reference) and partitioned, and compares the gathered positions
+# after every interval. Cases (several loads, laws, strengths, partitions,
+# rank counts and halo widths), each must give:
+# - the same sub-steps and bitwise the serial positions (max relative
+#   difference 0, no differing node) at every interval: the halo gives
+#   every owned node the serial force contributions in the serial order;
+# - the fracture it is meant to test (broken joints above a floor) and, for
+#   the fast loads, halo rebuilds (fragments and the pulled part move by
+#   more than a quarter of the halo width).
+# Failure paths: a halo too narrow for the motion within one interval stops
+# with a FatalError naming 'partition.haloWidth'; a negative haloWidth is a
+# FatalIOError naming the entry.
+cd "$JWLIBFOAM_TEST_DIR" || exit 1
+mkdir -p system
+fail=0
+run() {  # name minBroken minRebuilds ranks args...
+    local name=$1 minBroken=$2 minRebuilds=$3 np=$4; shift 4
+    mpirun -np "$np" femdemPartitionCheck -parallel "$@" > "log.$name" 2>&1 \
+        || { tail -5 "log.$name"; echo ">> $name: femdemPartitionCheck failed  <-- FAIL"; fail=1; return; }
+    local last rebuilds
+    last=$(grep '^max relative difference' "log.$name")
+    rebuilds=$(grep -o 'halo rebuilds [0-9]*' "log.$name" | awk '{print $3}')
+    rel=$(echo "$last" | sed -n 's/.*max relative difference \([^,]*\),.*/\1/p')
+    nodes=$(echo "$last" | sed -n 's/.*differing nodes \([0-9]*\),.*/\1/p')
+    broken=$(echo "$last" | sed -n 's/.*broken joints \([0-9]*\),.*/\1/p')
+    steps=$(echo "$last" | sed -n 's/.*steps \([0-9]*\)$/\1/p')
+    local halo
+    halo=$(grep -m1 'rank 0:' "log.$name" | sed 's/.*rank 0: //; s/, halo width.*//')
+    echo ">> $name ($np ranks; $*): $steps sub-steps, broken joints $broken, halo rebuilds $rebuilds, max relative difference $rel, differing nodes $nodes; rank 0: $halo"
+    if [ "$rel" != 0 ] || [ "$nodes" != 0 ]; then
+        echo ">> $name: partitioned positions differ from serial  <-- FAIL"; fail=1
+    fi
+    if [ "$broken" -lt "$minBroken" ]; then
+        echo ">> $name: $broken broken joints, fewer than the $minBroken the case needs  <-- FAIL"; fail=1
+    fi
+    if [ "$rebuilds" -lt "$minRebuilds" ]; then
+        echo ">> $name: $rebuilds halo rebuilds, fewer than $minRebuilds  <-- FAIL"; fail=1
+    fi
+}
+run tension        15  0 2 -load tension -intervals 20 -weibull
+run compression   500  0 2 -load compression -intervals 30
+run shearSVK      300  0 2 -load shear -intervals 30 -law StVenantKirchhoff -weibull -nx 60 -ny 30
+run noContact     600  0 2 -load compression -intervals 20 -contact none
+run impact       1500  4 2 -load impact -intervals 30
+run impactStripes3 1500 4 3 -load impact -intervals 30 -owner stripes -law StVenantKirchhoff
+run pullThinHalo   30 10 2 -load pull -intervals 150 -interval 2e-6 -haloWidth 0.002 -weibull
+
+# A halo too narrow for one interval's motion: a clean stop naming the entry
+mpirun -np 2 femdemPartitionCheck -parallel -load pull -intervals 30 -haloWidth 0.0005 > log.narrow 2>&1
+rc=$?
+if [ $rc -ne 0 ] && [ $rc -lt 128 ] && grep -q "partition.haloWidth" log.narrow && grep -q "before the halo could be rebuilt" log.narrow; then
+    echo ">> narrow halo (0.5 mm, intervals of 10 us at 30 m/s): stopped, exit status $rc: $(grep -m1 -o 'a node of the partitioned FEMDEM solid moved [^,]*' log.narrow)"
+else
+    tail -5 log.narrow; echo ">> narrow halo: expected a FatalError naming partition.haloWidth, exit status $rc  <-- FAIL"; fail=1
+fi
+mpirun -np 2 femdemPartitionCheck -parallel -load tension -intervals 1 -haloWidth -1 > log.negative 2>&1
+rc=$?
+if [ $rc -ne 0 ] && [ $rc -lt 128 ] && grep -q "FOAM FATAL IO ERROR" log.negative && grep -q "entry 'partition.haloWidth' must be positive" log.negative; then
+    echo ">> haloWidth -1: FatalIOError naming the entry, exit status $rc"
+else
+    tail -5 log.negative; echo ">> haloWidth -1: expected a FatalIOError naming the entry, exit status $rc  <-- FAIL"; fail=1
+fi
+exit $fail
