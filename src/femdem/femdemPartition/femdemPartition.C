@@ -61,6 +61,12 @@ scalar longestEdge(const triangleMesh& mesh)
     return l;
 }
 
+template<class Type>
+std::size_t bytes(const UList<Type>& list)
+{
+    return std::size_t(list.size())*sizeof(Type);
+}
+
 } // End anonymous namespace
 
 
@@ -520,6 +526,27 @@ Foam::label Foam::femdemPartition::advance(const scalar interval)
         rebuild();
     }
     return n;
+}
+
+
+std::size_t Foam::femdemPartition::globalBytes() const
+{
+    std::size_t b =
+        bytes(globalMesh_.points()) + bytes(globalMesh_.triangles())
+      + bytes(globalMesh_.triangleMaterials())
+      + bytes(globalTopo_.jointTriangleA()) + bytes(globalTopo_.jointEdgeA())
+      + bytes(globalTopo_.jointTriangleB()) + bytes(globalTopo_.jointEdgeB())
+      + bytes(globalTopo_.jointNodes()) + bytes(globalTopo_.edgeJoint())
+      + bytes(globalTopo_.boundaryTriangle()) + bytes(globalTopo_.boundaryEdge())
+      + bytes(globalTopo_.boundaryPatch()) + bytes(globalTopo_.nodeVertex())
+      + bytes(globalTopo_.initialPoints()) + bytes(owner_)
+      + bytes(globalTriangle_) + bytes(owned_) + bytes(x0_);
+    forAll(procs_, i)
+    {
+        b += bytes(sendBuf_[i]) + bytes(recvBuf_[i])
+          + bytes(sendTriangles_[i]) + bytes(recvTriangles_[i]);
+    }
+    return b;
 }
 
 

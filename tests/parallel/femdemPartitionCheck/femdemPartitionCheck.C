@@ -124,6 +124,11 @@ int main(int argc, char *argv[])
     argList::addOption("owner", "word", "metis | stripes");
     argList::addOption("haloWidth", "scalar", "halo width [m]");
     argList::addBoolOption("verbose", "list the first differing nodes");
+    argList::addBoolOption
+    (
+        "noReference",
+        "partitioned run only (timing, benchmarks/femdemScaling)"
+    );
     argList args(argc, argv);
 
     const word load = args.getOrDefault<word>("load", "tension");
@@ -146,7 +151,12 @@ int main(int argc, char *argv[])
     const dictionary dict(is);
 
     // Serial reference (every rank runs it) and the partitioned solid
-    femdemSolid serial(mesh, dict);
+    const bool reference = !args.found("noReference");
+    autoPtr<femdemSolid> serialPtr;
+    if (reference)
+    {
+        serialPtr.reset(new femdemSolid(mesh, dict));
+    }
     autoPtr<femdemPartition> partPtr;
     if (ownerKind == "stripes")
     {
@@ -172,6 +182,33 @@ int main(int argc, char *argv[])
         << part.neighbourRanks() << ", " << part.bytesPerStep()
         << " bytes sent per step, halo width " << part.haloWidth() << " m"
         << endl;
+
+    if (!reference)
+    {
+        // Timed: the partitioned solid alone
+        returnReduce(label(0), sumOp<label>());     // all ranks start together
+        const clockTime wall;
+        label steps = 0;
+        for (label i = 0; i < nIntervals; ++i)
+        {
+            steps += part.advance(interval);
+        }
+        returnReduce(label(0), sumOp<label>());
+        const scalar seconds = wall.elapsedTime();
+        Pout<< "rank " << Pstream::myProcNo() << ": local solid "
+            << part.localBytes() << " bytes ("
+            << scalar(part.localBytes())/part.nOwned()
+            << " per owned triangle), global copies " << part.globalBytes()
+            << " bytes" << endl;
+        Info<< "ranks " << Pstream::nProcs() << ", triangles "
+            << mesh.nTriangles() << ", sub-steps " << steps << ", wall "
+            << seconds << " s, triangle-steps per second "
+            << scalar(mesh.nTriangles())*steps/seconds << ", halo rebuilds "
+            << part.nRebuilds() << ", broken joints (rank 0's solid) "
+            << part.solid().nBrokenJoints() << endl;
+        return 0;
+    }
+    femdemSolid& serial = serialPtr();
 
     const List<vector2D> x0(serial.x());
     scalar worst = 0;
