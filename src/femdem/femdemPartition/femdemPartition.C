@@ -86,32 +86,14 @@ Foam::labelList Foam::femdemPartition::haloTriangles
 
     // Vertex neighbours: the joints of the owned triangles and the fan of a
     // patch vertex (femdemSolid constrains every node at a patch vertex)
-    labelList pointStart(mesh.nPoints() + 1, Zero);
-    for (const triangleVertices& v : tris)
-    {
-        for (label k = 0; k < 3; ++k) ++pointStart[v[k] + 1];
-    }
-    for (label p = 0; p < mesh.nPoints(); ++p)
-    {
-        pointStart[p + 1] += pointStart[p];
-    }
-    labelList pointTris(pointStart[mesh.nPoints()]);
-    {
-        labelList fill(SubList<label>(pointStart, mesh.nPoints()));
-        forAll(tris, t)
-        {
-            for (label k = 0; k < 3; ++k) pointTris[fill[tris[t][k]]++] = t;
-        }
-    }
     forAll(tris, t)
     {
         if (owner[t] != me) continue;
         for (label k = 0; k < 3; ++k)
         {
-            const label p = tris[t][k];
-            for (label i = pointStart[p]; i < pointStart[p + 1]; ++i)
+            for (const label n : pointTriangles_[tris[t][k]])
             {
-                inHalo[pointTris[i]] = true;
+                inHalo[n] = true;
             }
         }
     }
@@ -434,6 +416,7 @@ Foam::femdemPartition::femdemPartition
     globalMesh_(mesh),
     globalTopo_(mesh),
     owner_(owner),
+    pointTriangles_(),
     dict_(dict),
     moveBound_(0),
     tLast_(0),
@@ -462,6 +445,9 @@ Foam::femdemPartition::femdemPartition
                 << exit(FatalError);
         }
     }
+
+    // The triangles at each point (the halo's vertex neighbours)
+    invertManyToMany(mesh.nPoints(), mesh.triangles(), pointTriangles_);
 
     // The nodes at the mesh's points
     List<vector2D> x(3*nGlobal_);
@@ -541,6 +527,10 @@ std::size_t Foam::femdemPartition::globalBytes() const
       + bytes(globalTopo_.boundaryPatch()) + bytes(globalTopo_.nodeVertex())
       + bytes(globalTopo_.initialPoints()) + bytes(owner_)
       + bytes(globalTriangle_) + bytes(owned_) + bytes(x0_);
+    for (const labelList& tris : pointTriangles_)
+    {
+        b += sizeof(tris) + bytes(tris);
+    }
     forAll(procs_, i)
     {
         b += bytes(sendBuf_[i]) + bytes(recvBuf_[i])
@@ -585,7 +575,7 @@ Foam::scalarList Foam::femdemPartition::gatherJoints
         const label tA = topo.jointTriangleA()[j];
         const label g =
             globalTopo_.edgeJoint()[3*globalTriangle_[tA] + topo.jointEdgeA()[j]];
-        if (owned_[tA] && globalTopo_.jointTriangleA()[g] == globalTriangle_[tA])
+        if (owned_[tA])
         {
             values[g] = local[j];
         }

@@ -245,16 +245,9 @@ Foam::triangleMesh Foam::solidMeshRenumber::subset
             }
         }
         // A per-edge list stays a per-edge list (empty means 'uniform')
-        const bool hadStrength = js.strengthFactor.size();
-        const bool hadFriction = js.frictionAngle.size();
         js.edges.transfer(edges);
         js.strengthFactor.transfer(strength);
         js.frictionAngle.transfer(friction);
-        if (js.edges.empty() && (hadStrength || hadFriction))
-        {
-            js.strengthFactor.clear();
-            js.frictionAngle.clear();
-        }
     }
     triangleMesh result
     (
