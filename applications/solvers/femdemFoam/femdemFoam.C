@@ -50,6 +50,22 @@ Description
     (a time directory with femdemState, restartable) and the run ends
     normally, exit status 0 (stopOnSignal). A second signal kills at once.
 
+    Parallel: 'mpirun -np N femdemFoam -parallel' on the undecomposed case
+    (no decomposePar: the solid has no fluid mesh). The solid is
+    partitioned over the ranks (femdemPartition: METIS on the triangle
+    graph, redundant halo, optional sub-dictionary 'partition' of
+    femdemProperties); node positions equal the serial run's bit for bit.
+    The energy budget, reactions and broken joints are sums over the ranks
+    (each counts its owned nodes and joints); fragments, cracks and VTK come
+    from the state gathered on the master at log and write times. The
+    state is one global <time>/femdemState in the case directory, the file
+    of a serial run: serial and parallel runs (any rank count) restart from
+    each other's states. processor<N>/<time>/uniform/time keep the exact
+    time and write schedule of each rank (restartableTime); the master
+    copies it beside the global state. A parallel run restarts from the
+    latest processor time (startFrom latestTime) or from a state of a
+    serial run (startFrom startTime; startTime <time>).
+
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
@@ -59,6 +75,7 @@ Description
 #include "IFstream.H"
 #include "OSspecific.H"
 #include "femdemSolid.H"
+#include "femdemPartition.H"
 #include "contactLaw.H"
 #include "solidVtkWriter.H"
 #include "femdemOutput.H"
@@ -82,7 +99,9 @@ int main(int argc, char *argv[])
         "Solid-only FEMDEM solver (2D plane strain): triangles, cohesive"
         " joints, contact"
     );
-    argList::noParallel();
+    // Parallel runs need no processor directories: the solid is
+    // partitioned at the start (femdemPartition), the state is global
+    argList::noCheckProcessorDirectories();
 
     caseChecks::checkCasePath(argc, argv);
     #include "setRootCase.H"
@@ -90,7 +109,7 @@ int main(int argc, char *argv[])
     // Before Time reads system/controlDict: mpirun without -parallel, deltaT/writeInterval/endTime that Time would trap
     // on (writeInterval 0) or accept and then do nothing
     caseChecks::checkLaunch(args);
-    caseChecks::checkControlDict(args);
+    caseChecks::checkControlDict(args, true);
 
     #include "createRestartableTime.H"
     caseChecks::checkStartTime(runTime);
@@ -120,8 +139,78 @@ int main(int argc, char *argv[])
     }
 
     const triangleMesh mesh = triangleMesh::New(runTime);
-    femdemSolid solid(mesh, solidDict);
-    reportJointStrengths(solid);
+
+    // solidProbes reads femdemSolid::active(): in parallel one rank's part
+    if (Pstream::parRun())
+    {
+        const dictionary& fns =
+            runTime.controlDict().subOrEmptyDict("functions");
+        for (const entry& e : fns)
+        {
+            if
+            (
+                e.isDict()
+             && e.dict().getOrDefault<word>("type", word::null)
+             == "solidProbes"
+            )
+            {
+                FatalIOErrorInFunction(runTime.controlDict())
+                    << "entry 'functions/" << e.keyword() << "': type"
+                    << " solidProbes does not run in parallel femdemFoam yet"
+                    << " (it would read one rank's part of the partitioned"
+                    << " solid). Run serially, or remove the entry"
+                    << exit(FatalIOError);
+            }
+        }
+    }
+
+    // Serial: the whole solid. Parallel: this rank's part (owned + halo
+    // triangles) of the partitioned solid
+    autoPtr<femdemSolid> serialSolid;
+    autoPtr<femdemPartition> partition;
+    if (Pstream::parRun())
+    {
+        partition.reset(new femdemPartition(mesh, solidDict));
+        Info<< "Partitioned solid over " << Pstream::nProcs() << " ranks:"
+            << " halo width " << partition->haloWidth() << " m, owned"
+            << " triangles per rank " << returnReduce(partition->nOwned(), minOp<label>())
+            << " to " << returnReduce(partition->nOwned(), maxOp<label>())
+            << ", halo triangles " << returnReduce(partition->nHalo(), sumOp<label>())
+            << " in all" << nl
+            << "Solid memory per rank: local solid "
+            << returnReduce(scalar(partition->localBytes()), maxOp<scalar>())/1e6
+            << " MB (largest rank), copies of the whole mesh and joint"
+            << " topology " << scalar(partition->globalBytes())/1e6 << " MB"
+            << endl;
+    }
+    else
+    {
+        serialSolid.reset(new femdemSolid(mesh, solidDict));
+        Info<< "Solid memory: " << scalar(serialSolid->memoryBytes())/1e6
+            << " MB" << endl;
+    }
+    // This rank's solid now (a partitioned solid's local solid is rebuilt
+    // when the halo is: never keep a reference to it)
+    auto localSolid = [&]() -> femdemSolid&
+    {
+        return partition.valid() ? partition->solid() : serialSolid();
+    };
+
+    // The whole solid's state: the solid itself, or the master's gathered
+    // copy of a partitioned one (collective: every rank calls it)
+    auto wholeSolid = [&]() -> const femdemSolid&
+    {
+        return partition.valid() ? partition->gather() : serialSolid();
+    };
+    if (partition.valid())
+    {
+        const femdemSolid& whole = wholeSolid();
+        if (Pstream::master()) reportJointStrengths(whole, false);
+    }
+    else
+    {
+        reportJointStrengths(serialSolid());
+    }
 
     const dictionary outDict = properties.subOrEmptyDict("output");
     const scalar logInterval =
@@ -152,7 +241,7 @@ int main(int argc, char *argv[])
                 << exit(FatalIOError);
         }
         bool found = false;
-        for (const femdemSolid::boundaryCondition& bc : solid.boundaryConditions())
+        for (const femdemSolid::boundaryCondition& bc : localSolid().boundaryConditions())
         {
             if
             (
@@ -166,7 +255,7 @@ int main(int argc, char *argv[])
                 found = true;
             }
         }
-        if (!found)
+        if (!returnReduce(found, orOp<bool>()))
         {
             FatalIOErrorInFunction(properties)
                 << "entry 'output/reactions': patch '" << p << "' has no"
@@ -178,8 +267,10 @@ int main(int argc, char *argv[])
     // Restart from the state of the start time. femdemFoam reads nothing
     // else from time directories, so a start time directory other than 0
     // was written by an earlier run: it must hold the solid's state (else
-    // the solid would silently restart from the mesh at rest)
-    const fileName stateFile = runTime.timePath()/"femdemState";
+    // the solid would silently restart from the mesh at rest). The state
+    // is global (the case directory's time directories, also in parallel)
+    const fileName caseDir = runTime.globalPath();
+    const fileName stateFile = caseDir/runTime.timeName()/"femdemState";
     const bool restart =
         isDir(runTime.timePath()) && runTime.timeName() != "0";
     if (restart && !isFile(stateFile))
@@ -191,65 +282,84 @@ int main(int argc, char *argv[])
             << " the time directory, or set startFrom/startTime to a time"
             << " with a femdemState" << exit(FatalError);
     }
-    if (readState(solid, stateFile))
+    const bool restarted =
+        partition.valid()
+      ? partition->readState(stateFile)
+      : readState(serialSolid(), stateFile);
+    const label nBroken0 =
+        partition.valid()
+      ? partition->nBrokenJoints()
+      : serialSolid().nBrokenJoints();
+    if (restarted)
     {
         Info<< "Restarted from " << stateFile << " (solid time "
-            << solid.time() << ", " << solid.nBrokenJoints()
-            << " broken joints)" << nl << endl;
+            << localSolid().time() << ", " << nBroken0 << " broken joints)" << nl
+            << endl;
     }
-    else
+    else if (!partition.valid())
     {
-        solid.resetEnergyBudget();
+        // (a partitioned solid's budget starts at its construction)
+        serialSolid().resetEnergyBudget();
     }
 
-    Info<< "FEMDEM solid: " << solid.nTriangles() << " triangles, "
-        << solid.nJoints() << " joints, " << solid.materials().size()
-        << " material(s)" << nl
-        << "Stable time step: " << solid.stableTimeStep() << " s ("
-        << std::ceil(runTime.deltaTValue()/solid.stableTimeStep())
+    Info<< "FEMDEM solid: " << mesh.nTriangles() << " triangles, "
+        << jointTopology(mesh).nJoints() << " joints, "
+        << localSolid().materials().size() << " material(s)" << nl
+        << "Stable time step: " << localSolid().stableTimeStep() << " s ("
+        << std::ceil(runTime.deltaTValue()/localSolid().stableTimeStep())
         << " sub-steps per deltaT)" << nl << endl;
 
-    // Logs
+    // Logs (master)
     const fileName postDir =
-        runTime.path()/"postProcessing"/"femdem"/runTime.timeName();
-    mkDir(postDir);
-    OFstream energyLog(postDir/"energy.dat");
-    OFstream fragmentLog(postDir/"fragments.dat");
-    OFstream reactionLog(postDir/"reactions.dat");
-    OFstream crackLog(postDir/"crackEvents.dat");
-    crackLog.precision(10);
-    crackLog
-        << "# joints as they break (time of the log after the breakage):"
-        << " time x0 y0 x1 y1 (initial positions)" << nl;
-    boolList crackLogged(solid.nJoints(), false);
-    energyLog.precision(10);
-    reactionLog.precision(10);
-    fragmentLog.precision(10);
-    energyLog
-        << "# time kinetic elastic jointStored fracture damping contact"
-        << " gravity external initial residual" << nl;
-    fragmentLog
-        << "# time nFragments nBrokenJoints largestMassFraction"
-        << " maxFragmentSpeed meanFragmentMass" << nl;
-    reactionLog << "# time";
-    for (const word& p : reactionPatches)
+        caseDir/"postProcessing"/"femdem"/runTime.timeName();
+    autoPtr<OFstream> energyLog, fragmentLog, reactionLog, crackLog;
+    boolList crackLogged;
+    if (Pstream::master())
     {
-        reactionLog << " " << p << "_Fx " << p << "_Fy";
+        mkDir(postDir);
+        energyLog.reset(new OFstream(postDir/"energy.dat"));
+        fragmentLog.reset(new OFstream(postDir/"fragments.dat"));
+        reactionLog.reset(new OFstream(postDir/"reactions.dat"));
+        crackLog.reset(new OFstream(postDir/"crackEvents.dat"));
+        crackLog().precision(10);
+        crackLog()
+            << "# joints as they break (time of the log after the breakage):"
+            << " time x0 y0 x1 y1 (initial positions)" << nl;
+        crackLogged.setSize(jointTopology(mesh).nJoints(), false);
+        energyLog().precision(10);
+        reactionLog().precision(10);
+        fragmentLog().precision(10);
+        energyLog()
+            << "# time kinetic elastic jointStored fracture damping contact"
+            << " gravity external initial residual" << nl;
+        fragmentLog()
+            << "# time nFragments nBrokenJoints largestMassFraction"
+            << " maxFragmentSpeed meanFragmentMass" << nl;
+        reactionLog() << "# time";
+        for (const word& p : reactionPatches)
+        {
+            reactionLog() << " " << p << "_Fx " << p << "_Fy";
+        }
+        reactionLog() << nl;
     }
-    reactionLog << nl;
 
     autoPtr<solidVtkWriter> vtkWriter;
-    const fileName vtkDir = runTime.path()/"VTK";
+    const fileName vtkDir = caseDir/"VTK";
     if (doVtk)
     {
-        vtkWriter.reset(new solidVtkWriter(vtkDir, "femdem"));
-        writeVtk(*vtkWriter, solid, vtkDir, runTime.value());
+        const femdemSolid& whole = wholeSolid();
+        if (Pstream::master())
+        {
+            vtkWriter.reset(new solidVtkWriter(vtkDir, "femdem"));
+            writeVtk(*vtkWriter, whole, vtkDir, runTime.value());
+        }
     }
 
     auto logState = [&]()
     {
         const scalar t = runTime.value();
-        const femdemSolid::energyBudget e = solid.energies();
+        const femdemSolid::energyBudget e =
+            partition.valid() ? partition->energies() : serialSolid().energies();
         if (!std::isfinite(e.kinetic) || !std::isfinite(e.elastic))
         {
             FatalErrorInFunction
@@ -257,13 +367,27 @@ int main(int argc, char *argv[])
                 << e.kinetic << "): lower timeStepSafety in "
                 << properties.objectPath() << exit(FatalError);
         }
-        energyLog
+        List<vector2D> R(reactionPatches.size());
+        forAll(reactionPatches, i)
+        {
+            R[i] =
+                partition.valid()
+              ? partition->reaction(reactionPatches[i])
+              : serialSolid().reaction(reactionPatches[i]);
+        }
+        const femdemSolid& whole = wholeSolid();
+        if (!Pstream::master())
+        {
+            return;
+        }
+
+        energyLog()
             << t << ' ' << e.kinetic << ' ' << e.elastic << ' '
             << e.jointStored << ' ' << e.fracture << ' ' << e.damping << ' '
             << e.contact << ' ' << e.gravity << ' ' << e.external << ' '
             << e.initial << ' ' << e.residual() << nl;
 
-        const femdemSolid::fragmentData fr = solid.fragments();
+        const femdemSolid::fragmentData fr = whole.fragments();
         scalar mTotal = 0, mMax = 0, vMax = 0;
         forAll(fr.mass, i)
         {
@@ -271,31 +395,30 @@ int main(int argc, char *argv[])
             mMax = max(mMax, fr.mass[i]);
             vMax = max(vMax, mag(fr.velocity[i]));
         }
-        fragmentLog
-            << t << ' ' << fr.mass.size() << ' ' << solid.nBrokenJoints()
+        fragmentLog()
+            << t << ' ' << fr.mass.size() << ' ' << whole.nBrokenJoints()
             << ' ' << mMax/mTotal << ' ' << vMax << ' '
             << mTotal/fr.mass.size() << nl;
 
-        reactionLog << t;
-        for (const word& p : reactionPatches)
+        reactionLog() << t;
+        for (const vector2D& Ri : R)
         {
-            const vector2D R = solid.reaction(p);
-            reactionLog << ' ' << R.x() << ' ' << R.y();
+            reactionLog() << ' ' << Ri.x() << ' ' << Ri.y();
         }
-        reactionLog << nl;
+        reactionLog() << nl;
 
         // Joints broken since the last log
-        const List<jointNodeList>& jn = solid.topology().jointNodes();
-        const List<vector2D>& X0 = solid.topology().initialPoints();
-        const labelList& vertex = solid.topology().nodeVertex();
+        const List<jointNodeList>& jn = whole.topology().jointNodes();
+        const List<vector2D>& X0 = whole.topology().initialPoints();
+        const labelList& vertex = whole.topology().nodeVertex();
         forAll(crackLogged, j)
         {
-            if (solid.jointBroken()[j] && !crackLogged[j])
+            if (whole.jointBroken()[j] && !crackLogged[j])
             {
                 crackLogged[j] = true;
                 const vector2D& a = X0[vertex[jn[j][0]]];
                 const vector2D& b = X0[vertex[jn[j][1]]];
-                crackLog
+                crackLog()
                     << t << ' ' << a.x() << ' ' << a.y() << ' ' << b.x()
                     << ' ' << b.y() << nl;
             }
@@ -303,10 +426,10 @@ int main(int argc, char *argv[])
 
         // Every row flushed: a run that stops (a diverged solid: FatalError
         // exits without unwinding) kept only whole buffers, cut mid-row
-        energyLog.flush();
-        fragmentLog.flush();
-        reactionLog.flush();
-        crackLog.flush();
+        energyLog().flush();
+        fragmentLog().flush();
+        reactionLog().flush();
+        crackLog().flush();
 
         const scalar input = e.initial + e.external + e.gravity;
         Info<< "    energy: kinetic " << e.kinetic << " elastic " << e.elastic
@@ -314,7 +437,7 @@ int main(int argc, char *argv[])
             << " contact " << e.contact << " input " << input
             << " residual " << e.residual() << nl
             << "    fragments " << fr.mass.size() << ", broken joints "
-            << solid.nBrokenJoints() << endl;
+            << whole.nBrokenJoints() << endl;
     };
 
     // Log times counted from the start of the write schedule (the first
@@ -335,10 +458,19 @@ int main(int argc, char *argv[])
         // so that the steps end on the write times
         runTime.setDeltaT(runTime.controlDict().get<scalar>("deltaT"));
         ++runTime;
-        const label nSub = solid.advance(runTime.deltaTValue());
+        const label nSub =
+            partition.valid()
+          ? partition->advance(runTime.deltaTValue())
+          : serialSolid().advance(runTime.deltaTValue());
 
         Info<< "Time = " << runTime.timeName() << "  sub-steps " << nSub
-            << "  broken joints " << solid.nBrokenJoints() << endl;
+            << "  broken joints "
+            << (
+                   partition.valid()
+                 ? partition->nBrokenJoints()
+                 : serialSolid().nBrokenJoints()
+               )
+            << endl;
 
         if (runTime.value() >= nextLog - eps)
         {
@@ -352,22 +484,53 @@ int main(int argc, char *argv[])
 
         if (runTime.writeTime())
         {
-            mkDir(runTime.timePath());
-            writeState(solid, runTime.timePath()/"femdemState");
-            writeCracks(solid, postDir/("cracks_" + runTime.timeName() + ".dat"));
-            if (doVtk)
+            const fileName stateOut = caseDir/runTime.timeName()/"femdemState";
+            const femdemSolid& whole = wholeSolid();
+            if (Pstream::master())
             {
-                writeVtk(*vtkWriter, solid, vtkDir, runTime.value());
+                mkDir(stateOut.path());
+                writeState(whole, stateOut);
+                writeCracks(whole, postDir/("cracks_" + runTime.timeName() + ".dat"));
+                if (doVtk)
+                {
+                    writeVtk(*vtkWriter, whole, vtkDir, runTime.value());
+                }
             }
-            Info<< "    wrote " << runTime.timePath()/"femdemState" << endl;
+            Info<< "    wrote " << stateOut << endl;
         }
 
         // uniform/time at write times (exact time and write schedule for
-        // restarts)
+        // restarts); in parallel into processor<N>/<time>, and the master
+        // copies it beside the global state (a serial restart reads it)
         runTime.write();
+        if (Pstream::parRun() && runTime.writeTime() && Pstream::master())
+        {
+            const fileName timeDict = runTime.timePath()/"uniform"/"time";
+            mkDir(caseDir/runTime.timeName()/"uniform");
+            cp(timeDict, caseDir/runTime.timeName()/"uniform"/"time");
+        }
     }
 
-    writeCracks(solid, postDir/"cracks.dat");
+    {
+        const femdemSolid& whole = wholeSolid();
+        if (Pstream::master())
+        {
+            writeCracks(whole, postDir/"cracks.dat");
+        }
+    }
+    if (partition.valid())
+    {
+        // (the copy exists on the master only)
+        const scalar copyMB =
+            Pstream::master()
+          ? scalar(partition->globalSolid().memoryBytes())/1e6
+          : 0;
+        Info<< nl << "Halo rebuilds " << partition->nRebuilds()
+            << ", exact displacement checks "
+            << partition->nDisplacementChecks() << nl
+            << "The master's gathered copy of the whole solid (output): "
+            << copyMB << " MB" << endl;
+    }
     Info<< nl << "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
         << nl << "End" << nl << endl;
 

@@ -178,10 +178,19 @@ void Foam::femdemOutput::writeVtk
 }
 
 
-void Foam::femdemOutput::reportJointStrengths(const femdemSolid& solid)
+void Foam::femdemOutput::reportJointStrengths
+(
+    const femdemSolid& solid,
+    const bool compareRanks
+)
 {
     const scalarList& w = solid.jointStrength();
-    if (!returnReduce(w.size() > 0, orOp<bool>()))
+    if
+    (
+        compareRanks
+      ? !returnReduce(w.size() > 0, orOp<bool>())
+      : w.empty()
+    )
     {
         return;
     }
@@ -211,21 +220,24 @@ void Foam::femdemOutput::reportJointStrengths(const femdemSolid& solid)
 
     // Every rank's digest and count to the master, which compares them
     List<word> digests(Pstream::nProcs());
-    digests[Pstream::myProcNo()] = word(hex) + "/" + Foam::name(n);
-    Pstream::gatherList(digests);
     label differ = 0;
-    if (Pstream::master())
+    if (compareRanks)
     {
-        forAll(digests, proci)
+        digests[Pstream::myProcNo()] = word(hex) + "/" + Foam::name(n);
+        Pstream::gatherList(digests);
+        if (Pstream::master())
         {
-            if (digests[proci] != digests[0]) ++differ;
+            forAll(digests, proci)
+            {
+                if (digests[proci] != digests[0]) ++differ;
+            }
         }
+        reduce(differ, maxOp<label>());
     }
-    reduce(differ, maxOp<label>());
     Info<< "Joint strengths (strengthDistribution): " << n << " joints,"
         << " factor mean " << mean << ", coefficient of variation " << cv
         << ", min " << lo << ", max " << hi << ", digest " << hex;
-    if (Pstream::parRun())
+    if (Pstream::parRun() && compareRanks)
     {
         if (differ)
         {

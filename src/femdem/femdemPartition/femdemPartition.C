@@ -317,6 +317,8 @@ void Foam::femdemPartition::build(const UList<vector2D>& x)
 
     mesh_ = solidMeshRenumber::subset(globalMesh_, globalTriangle_);
     solid_.reset(new femdemSolid(mesh_, localDict(dict_)));
+    // Every node and joint counted in the budget of exactly one rank
+    solid_->setBudgetShare(owned_);
     setExchange();
     x0_ = solid_->x();
     moveBound_ = 0;
@@ -327,20 +329,45 @@ void Foam::femdemPartition::build(const UList<vector2D>& x)
 
 void Foam::femdemPartition::rebuild()
 {
-    // The state, global, from the owners
-    const List<vector2D> X = gatherNodes(solid_->x());
-    const List<vector2D> V = gatherNodes(solid_->v());
-    const scalarList damage = gatherJoints(solid_->jointDamage());
+    // The state, global, from the owners; the accounts stay with the rank
+    // (ownership is static)
+    List<vector2D> X = gatherNodes(solid_->x());
+    List<vector2D> V = gatherNodes(solid_->v());
+    scalarList damage = gatherJoints(solid_->jointDamage());
     scalarList broken(solid_->nJoints());
     forAll(broken, j)
     {
         broken[j] = solid_->jointBroken()[j];
     }
     broken = gatherJoints(broken);
-    const scalar time = solid_->time();
-    const label timeIndex = solid_->timeIndex();
-    const scalar deltaT = solid_->stableTimeStep();
+    const scalarList acc = solid_->energyAccounts();
+    setGlobalState
+    (
+        X, V, damage, broken, solid_->time(), solid_->timeIndex(),
+        solid_->stableTimeStep()
+    );
+    solid_->setEnergyAccounts(acc);
+    ++nRebuilds_;
+    if (debug)
+    {
+        Pout<< "femdemPartition: halo rebuilt at time " << solid_->time()
+            << ": " << nOwned_ << " owned, " << nHalo() << " halo triangles"
+            << endl;
+    }
+}
 
+
+void Foam::femdemPartition::setGlobalState
+(
+    const UList<vector2D>& X,
+    const UList<vector2D>& V,
+    const UList<scalar>& damage,
+    const UList<scalar>& broken,
+    const scalar time,
+    const label timeIndex,
+    const scalar deltaT
+)
+{
     // New halo and local solid at the present positions, with the state
     build(X);
     const label n = globalTriangle_.size();
@@ -370,12 +397,6 @@ void Foam::femdemPartition::rebuild()
     x0_ = solid_->x();
     tLast_ = time;
     rebuild_ = false;
-    ++nRebuilds_;
-    if (debug)
-    {
-        Pout<< "femdemPartition: halo rebuilt at time " << time << ": "
-            << nOwned_ << " owned, " << nHalo() << " halo triangles" << endl;
-    }
 }
 
 
@@ -383,7 +404,7 @@ Foam::scalar Foam::femdemPartition::makeStepGlobal(femdemSolid& solid)
 {
     // Each a largest over triangles or nodes: the global value is the
     // largest over the ranks (as min of the negatives: MPI's own reduction)
-    FixedList<scalar, 4> d = stepData(solid);
+    FixedList<scalar, 5> d = stepData(solid);
     for (scalar& v : d)
     {
         v = -v;
@@ -459,6 +480,7 @@ Foam::femdemPartition::femdemPartition
         }
     }
     build(x);
+    solid_->resetEnergyBudget();
 
     // The stable step of the start, global from the start
     makeStepGlobal(*solid_);
@@ -506,12 +528,14 @@ Foam::label Foam::femdemPartition::bytesPerStep() const
 
 Foam::label Foam::femdemPartition::advance(const scalar interval)
 {
-    const label n = solid_->advance(interval);
+    // The rebuild a past advance() asked for, before this one: between
+    // two advances the local solid keeps its last step (the staggered
+    // joint energy of the budget needs it)
     if (rebuild_)
     {
         rebuild();
     }
-    return n;
+    return solid_->advance(interval);
 }
 
 
@@ -542,7 +566,8 @@ std::size_t Foam::femdemPartition::globalBytes() const
 
 Foam::List<Foam::vector2D> Foam::femdemPartition::gatherNodes
 (
-    const UList<vector2D>& local
+    const UList<vector2D>& local,
+    const bool toAll
 ) const
 {
     // Every entry has exactly one contributor: x + 0 = x, bitwise
@@ -556,14 +581,18 @@ Foam::List<Foam::vector2D> Foam::femdemPartition::gatherNodes
         }
     }
     Pstream::listCombineGather(x, plusEqOp<vector2D>());
-    Pstream::listCombineScatter(x);
+    if (toAll)
+    {
+        Pstream::listCombineScatter(x);
+    }
     return x;
 }
 
 
 Foam::scalarList Foam::femdemPartition::gatherJoints
 (
-    const UList<scalar>& local
+    const UList<scalar>& local,
+    const bool toAll
 ) const
 {
     // From the owner of the joint's first triangle (which holds the joint:
@@ -581,7 +610,10 @@ Foam::scalarList Foam::femdemPartition::gatherJoints
         }
     }
     Pstream::listCombineGather(values, plusEqOp<scalar>());
-    Pstream::listCombineScatter(values);
+    if (toAll)
+    {
+        Pstream::listCombineScatter(values);
+    }
     return values;
 }
 

@@ -220,6 +220,7 @@ Foam::femdemSolid::femdemSolid
     lastDt_(0),
     jointsDamaged_(false),
     jointError_(0),
+    damageSeen_(false),
     halo_(nullptr)
 {
     // Before any product of the values: 1e300 would overflow to inf
@@ -385,9 +386,13 @@ void Foam::femdemSolid::step(const scalar dt)
     {
         const scalar h = 0.5*dt;
         scalar wt = 0, wd = 0, wj = 0, wc = 0, wl = 0, wg = 0;
+        // A partitioned solid counts its owned nodes only (the halo's
+        // forces are incomplete): weights 1 or 0, bitwise the serial sum
+        const scalar* share = nodeShare_.empty() ? nullptr : nodeShare_.cdata();
         for (label i = 0; i < n; ++i)
         {
-            const vector2D vm = h*(vOld_[i] + v[i]);
+            const vector2D vm =
+                share ? (share[i]*h)*(vOld_[i] + v[i]) : h*(vOld_[i] + v[i]);
             wt += fTri_[i] & vm;
             wd += (fDamp_[i] - alpha/im[i]*vOld_[i]) & vm;
             wj += fJoint_[i] & vm;
@@ -415,16 +420,21 @@ void Foam::femdemSolid::step(const scalar dt)
     lastDt_ = dt;
     ++step_;
 
-    // A partitioned solid: halo nodes from their owners, the stable step
-    // and the speed check global, so that every rank sub-steps alike
+    // Once per run: at the end of the step that damaged the first joint
+    // the joints' unbalanced work goes into jointError_
+    damageSeen_ = trackEnergy_ && (jointsDamaged_ || anyJointDamaged());
+
+    // A partitioned solid: halo nodes from their owners, the stable step,
+    // the speed check and the damage onset global, so that every rank
+    // sub-steps alike
     if (halo_)
     {
         halo_->afterStep(*this);
     }
 
-    if (trackEnergy_ && !jointsDamaged_)
+    if (damageSeen_ && !jointsDamaged_)
     {
-        checkDamageOnset();
+        setDamageOnset();
     }
 }
 

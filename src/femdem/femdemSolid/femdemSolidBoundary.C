@@ -239,11 +239,13 @@ void Foam::femdemSolid::applyConstraints(const scalar dt, const scalar tNew)
             const scalar m = 1/invMass_[n];
             vector2D vOld, F;
             stateBeforeConstraint(n, dt, vOld, F);
+            // A halo node's force is incomplete: its owner counts it
+            const scalar share = nodeShare_.empty() ? 1 : nodeShare_[n];
             for (direction c = 0; c < 2; ++c)
             {
                 if (!(bc.mask & (1 << c))) continue;
                 v_[n][c] = target[c];
-                const scalar Rc = m*(target[c] - vOld[c])/dt - F[c];
+                const scalar Rc = share*(m*(target[c] - vOld[c])/dt - F[c]);
                 R[c] += Rc;
                 work += Rc*0.5*dt*(vOld[c] + target[c]);
             }
@@ -314,7 +316,8 @@ void Foam::femdemSolid::applySymmetryPlane(const label b, const scalar dt)
         const scalar Fn = F & nrm;
         const scalar vOldN = vOld & nrm;
         v_[n] -= (v_[n] & nrm)*nrm;
-        const scalar R = -m*vOldN/dt - Fn;
+        const scalar share = nodeShare_.empty() ? 1 : nodeShare_[n];
+        const scalar R = share*(-m*vOldN/dt - Fn);
         Rn += R;
         work += R*0.5*dt*vOldN;
     }
@@ -359,6 +362,16 @@ Foam::vector2D Foam::femdemSolid::reaction(const word& patchName) const
         << "no boundary condition on patch '" << patchName << "'"
         << exit(FatalError);
     return Zero;
+}
+
+
+bool Foam::femdemSolid::hasBoundaryCondition(const word& patchName) const
+{
+    for (const boundaryCondition& bc : bcs_)
+    {
+        if (bc.patchName == patchName) return true;
+    }
+    return false;
 }
 
 

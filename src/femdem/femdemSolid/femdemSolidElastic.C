@@ -214,6 +214,7 @@ struct energyKernel
     const UList<femdemMaterial>& mats;
     List<symmTensor2D>* sigma;      //- null: energy only
     scalar energy;
+    const scalar* share;            //- node shares (null: all count)
 
     template<class Law>
     void run(const label* ids, const label n)
@@ -232,7 +233,8 @@ struct energyKernel
             }
             else
             {
-                energy += A0[t]*Law::energy(k, c);
+                const scalar e = A0[t]*Law::energy(k, c);
+                energy += share ? share[3*t]*e : e;
             }
         }
     }
@@ -439,7 +441,10 @@ void Foam::femdemSolid::updateStableTimeStep()
 Foam::scalar Foam::femdemSolid::elasticEnergy() const
 {
     energyKernel kernel
-        {x_, DmInv_, area0_, triangleMaterial_, materials_, nullptr, 0};
+        {
+            x_, DmInv_, area0_, triangleMaterial_, materials_, nullptr, 0,
+            nodeShare_.empty() ? nullptr : nodeShare_.cdata()
+        };
     forEachLawGroup(kernel);
     return kernel.energy;
 }
@@ -449,7 +454,7 @@ Foam::List<Foam::symmTensor2D> Foam::femdemSolid::stress() const
 {
     List<symmTensor2D> sigma(area0_.size());
     energyKernel kernel
-        {x_, DmInv_, area0_, triangleMaterial_, materials_, &sigma, 0};
+        {x_, DmInv_, area0_, triangleMaterial_, materials_, &sigma, 0, nullptr};
     forEachLawGroup(kernel);
     return sigma;
 }

@@ -30,7 +30,14 @@ namespace
 Foam::scalar Foam::femdemSolid::kineticEnergy() const
 {
     scalar energy = 0;
-    forAll(v_, i) energy += 0.5*magSqr(v_[i])/invMass_[i];
+    if (nodeShare_.empty())
+    {
+        forAll(v_, i) energy += 0.5*magSqr(v_[i])/invMass_[i];
+    }
+    else
+    {
+        forAll(v_, i) energy += nodeShare_[i]*0.5*magSqr(v_[i])/invMass_[i];
+    }
     return energy;
 }
 
@@ -38,7 +45,14 @@ Foam::scalar Foam::femdemSolid::kineticEnergy() const
 Foam::vector2D Foam::femdemSolid::momentum() const
 {
     vector2D p(Zero);
-    forAll(v_, i) p += v_[i]/invMass_[i];
+    if (nodeShare_.empty())
+    {
+        forAll(v_, i) p += v_[i]/invMass_[i];
+    }
+    else
+    {
+        forAll(v_, i) p += nodeShare_[i]*v_[i]/invMass_[i];
+    }
     return p;
 }
 
@@ -91,7 +105,7 @@ Foam::scalar Foam::femdemSolid::jointStoredStaggered() const
     {
         const vector2D dx = lastDt_*v_[i];
         x[i] -= dx;
-        fDx += fJoint_[i] & dx;
+        fDx += nodeShare_.empty() ? fJoint_[i] & dx : nodeShare_[i]*(fJoint_[i] & dx);
     }
     const scalar U = cohesive_->storedEnergy(*this);
     x = xScratch_;
@@ -99,18 +113,69 @@ Foam::scalar Foam::femdemSolid::jointStoredStaggered() const
 }
 
 
-void Foam::femdemSolid::checkDamageOnset()
+bool Foam::femdemSolid::anyJointDamaged() const
 {
     forAll(damage_, j)
     {
-        if (damage_[j] > 0 || broken_[j])
-        {
-            jointsDamaged_ = true;
-            jointError_ =
-                -wJoint_ - (jointStoredStaggered() - jointStored0_);
-            return;
-        }
+        if (damage_[j] > 0 || broken_[j]) return true;
     }
+    return false;
+}
+
+
+void Foam::femdemSolid::setDamageOnset()
+{
+    // (A partitioned solid: on every rank at the same step, the first in
+    // which any rank saw damage: joints carry energy across the ranks, so
+    // only the sum of the ranks' joint errors at one instant is the
+    // serial one)
+    jointsDamaged_ = true;
+    jointError_ = -wJoint_ - (jointStoredStaggered() - jointStored0_);
+}
+
+
+void Foam::femdemSolid::setBudgetShare(const UList<bool>& ownedTriangle)
+{
+    if (ownedTriangle.size() != area0_.size())
+    {
+        FatalErrorInFunction
+            << ownedTriangle.size() << " ownership flags for "
+            << area0_.size() << " triangles" << exit(FatalError);
+    }
+    nodeShare_.setSize(x_.size());
+    forAll(nodeShare_, i)
+    {
+        nodeShare_[i] = ownedTriangle[i/3] ? 1 : 0;
+    }
+    jointShare_.setSize(broken_.size());
+    forAll(jointShare_, j)
+    {
+        jointShare_[j] = ownedTriangle[topo_.jointTriangleA()[j]];
+    }
+}
+
+
+Foam::scalarList Foam::femdemSolid::energyAccounts() const
+{
+    return scalarList
+    ({
+        wTri_, wDamp_, wJoint_, wContact_, wGravity_, wExt_, energy0_,
+        jointStored0_, jointError_, scalar(jointsDamaged_)
+    });
+}
+
+
+void Foam::femdemSolid::setEnergyAccounts(const UList<scalar>& acc)
+{
+    if (acc.size() != 10)
+    {
+        FatalErrorInFunction
+            << "10 energy accounts needed, got " << acc.size()
+            << exit(FatalError);
+    }
+    wTri_ = acc[0]; wDamp_ = acc[1]; wJoint_ = acc[2]; wContact_ = acc[3];
+    wGravity_ = acc[4]; wExt_ = acc[5]; energy0_ = acc[6];
+    jointStored0_ = acc[7]; jointError_ = acc[8]; jointsDamaged_ = acc[9] != 0;
 }
 
 
@@ -235,13 +300,7 @@ void Foam::femdemSolid::writeState(Ostream& os) const
     os.writeEntry("v", v_);
     os.writeEntry("damage", damage_);
     os.writeEntry("broken", broken_);
-    os.writeEntry
-    (
-        "energyAccounts",
-        scalarList
-        ({wTri_, wDamp_, wJoint_, wContact_, wGravity_, wExt_, energy0_,
-          jointStored0_, jointError_, scalar(jointsDamaged_)})
-    );
+    os.writeEntry("energyAccounts", energyAccounts());
     if (fExt_.size()) os.writeEntry("externalForce", fExt_);
     // The step follows the state of the last force evaluation (one step
     // behind x): kept so that a restart takes the same sub-steps

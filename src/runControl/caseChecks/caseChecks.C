@@ -271,7 +271,11 @@ void Foam::caseChecks::checkControlDict(const dictionary& dict)
 }
 
 
-void Foam::caseChecks::checkControlDict(const argList& args)
+void Foam::caseChecks::checkControlDict
+(
+    const argList& args,
+    const bool globalTimes
+)
 {
     const fileName file = args.globalPath()/"system"/"controlDict";
     if (!isFile(file))
@@ -291,7 +295,11 @@ void Foam::caseChecks::checkControlDict(const argList& args)
      && dict.readIfPresent("startTime", startTime) && startTime != 0
     )
     {
-        const instantList times = Time::findTimes(args.path(), "constant");
+        instantList times = Time::findTimes(args.path(), "constant");
+        if (globalTimes && Pstream::parRun())
+        {
+            times.append(Time::findTimes(args.globalPath(), "constant"));
+        }
         bool found = false;
         for (const instant& t : times)
         {

@@ -1,0 +1,201 @@
+/*---------------------------------------------------------------------------*\
+  jwlIbFoam: blast in fractured solids, built on OpenFOAM v1912
+-------------------------------------------------------------------------------
+License
+    GNU General Public License v3 or later (as OpenFOAM).
+
+Description
+    Global diagnostics of the partitioned solid (energy budget, reactions,
+    broken joints), the gathered copy on the master for output, and the
+    state I/O: one global femdemState, the format of a serial run, so that
+    serial and parallel runs restart from each other's states.
+
+\*---------------------------------------------------------------------------*/
+
+#include "femdemPartition.H"
+#include "femdemOutput.H"
+#include "Pstream.H"
+#include "PstreamReduceOps.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::femdemSolid& Foam::femdemPartition::globalCopy()
+{
+    if (!global_.valid())
+    {
+        // Output and state I/O only: no budget of its own (the accounts
+        // it writes are the ranks' sums)
+        dictionary dict(dict_);
+        dict.set("trackEnergy", false);
+        global_.reset(new femdemSolid(globalMesh_, dict));
+    }
+    return *global_;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::femdemSolid::energyBudget Foam::femdemPartition::energies() const
+{
+    // Each rank's budget counts its owned nodes and joints (budget share):
+    // the sums are the whole solid's
+    const femdemSolid::energyBudget e = solid_->energies();
+    scalarField s
+    ({
+        e.kinetic, e.elastic, e.jointStored, e.fracture, e.damping,
+        e.contact, e.gravity, e.external, e.initial
+    });
+    reduce(s, sumOp<scalarField>());
+    femdemSolid::energyBudget g;
+    g.kinetic = s[0]; g.elastic = s[1]; g.jointStored = s[2];
+    g.fracture = s[3]; g.damping = s[4]; g.contact = s[5];
+    g.gravity = s[6]; g.external = s[7]; g.initial = s[8];
+    return g;
+}
+
+
+Foam::vector2D Foam::femdemPartition::reaction(const word& patchName) const
+{
+    // Ranks without faces on the patch have no condition on it
+    vector2D R(Zero);
+    if (solid_->hasBoundaryCondition(patchName))
+    {
+        R = solid_->reaction(patchName);
+    }
+    reduce(R, sumOp<vector2D>());
+    return R;
+}
+
+
+Foam::label Foam::femdemPartition::nBrokenJoints() const
+{
+    label n = 0;
+    forAll(solid_->jointBroken(), j)
+    {
+        if (solid_->jointBroken()[j] && solid_->countsJoint(j)) ++n;
+    }
+    return returnReduce(n, sumOp<label>());
+}
+
+
+const Foam::femdemSolid& Foam::femdemPartition::gather()
+{
+    // Master only: nodes and joints from their owners into the copy
+    List<vector2D> x = gatherNodes(solid_->x(), false);
+    List<vector2D> v = gatherNodes(solid_->v(), false);
+    scalarList damage = gatherJoints(solid_->jointDamage(), false);
+    scalarList brokenValue(solid_->nJoints());
+    forAll(brokenValue, j)
+    {
+        brokenValue[j] = solid_->jointBroken()[j];
+    }
+    brokenValue = gatherJoints(brokenValue, false);
+
+    // The accounts summed, the damage onset if any rank saw it
+    scalarField acc(solid_->energyAccounts());
+    const bool damaged = acc[9] != 0;
+    reduce(acc, sumOp<scalarField>());
+    acc[9] = returnReduce(damaged, orOp<bool>());
+
+    if (Pstream::master())
+    {
+        femdemSolid& global = globalCopy();
+        boolList broken(brokenValue.size());
+        forAll(broken, j)
+        {
+            broken[j] = brokenValue[j] != 0;
+        }
+        global.setState
+        (
+            x, v, damage, broken, solid_->time(), solid_->timeIndex()
+        );
+        global.setEnergyAccounts(acc);
+        global.restoreStableTimeStep(solid_->stableTimeStep());
+        return global;
+    }
+    return *solid_;
+}
+
+
+const Foam::femdemSolid& Foam::femdemPartition::globalSolid() const
+{
+    if (!Pstream::master() || !global_.valid())
+    {
+        FatalErrorInFunction
+            << "the gathered solid is on the master after gather()"
+            << exit(FatalError);
+    }
+    return *global_;
+}
+
+
+void Foam::femdemPartition::writeState(const fileName& file)
+{
+    const femdemSolid& g = gather();
+    if (Pstream::master())
+    {
+        femdemOutput::writeState(g, file);
+    }
+}
+
+
+bool Foam::femdemPartition::readState(const fileName& file)
+{
+    // The master reads and checks (femdemOutput::readState: FatalIOErrors
+    // naming the file and entry) into the gathered copy, the ranks take
+    // the state from it
+    bool found = false;
+    List<vector2D> x, v;
+    scalarList damage, broken, acc;
+    scalar time = 0, deltaT = 0;
+    label timeIndex = 0;
+    if (Pstream::master())
+    {
+        found = femdemOutput::readState(globalCopy(), file);
+        if (found)
+        {
+            x = global_->x();
+            v = global_->v();
+            damage = global_->jointDamage();
+            broken.setSize(global_->nJoints());
+            forAll(broken, j)
+            {
+                broken[j] = global_->jointBroken()[j];
+            }
+            acc = global_->energyAccounts();
+            time = global_->time();
+            timeIndex = global_->timeIndex();
+            deltaT = global_->stableTimeStep();
+        }
+    }
+    Pstream::scatter(found);
+    if (!found)
+    {
+        return false;
+    }
+    Pstream::scatter(x);
+    Pstream::scatter(v);
+    Pstream::scatter(damage);
+    Pstream::scatter(broken);
+    Pstream::scatter(acc);
+    Pstream::scatter(time);
+    Pstream::scatter(timeIndex);
+    Pstream::scatter(deltaT);
+    setGlobalState(x, v, damage, broken, time, timeIndex, deltaT);
+
+    // The accounts are sums over the ranks (the damage onset is global,
+    // femdemSolid::setDamageOnset): the master takes the state's, the
+    // others start from zero, all with the state's damage onset flag
+    scalarList local(10, Zero);
+    if (Pstream::master())
+    {
+        local = acc;
+    }
+    local[9] = acc[9];
+    solid_->setEnergyAccounts(local);
+    return true;
+}
+
+
+// ************************************************************************* //
