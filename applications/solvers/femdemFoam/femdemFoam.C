@@ -496,6 +496,12 @@ int main(int argc, char *argv[])
                     writeVtk(*vtkWriter, whole, vtkDir, runTime.value());
                 }
             }
+            if (partition.valid())
+            {
+                // Each rank's budget share: a restart on as many ranks
+                // continues the sums bitwise
+                partition->appendRankAccounts(stateOut, Pstream::master());
+            }
             Info<< "    wrote " << stateOut << endl;
         }
 

@@ -61,6 +61,7 @@ Description
 #include "fvCFD.H"
 #include "blastFluidSolver.H"
 #include "femdemSolid.H"
+#include "femdemPartition.H"
 #include "femdemOutput.H"
 #include "triangleMesh.H"
 #include "immersedBodyCoupling.H"

@@ -61,6 +61,15 @@ scalar longestEdge(const triangleMesh& mesh)
     return l;
 }
 
+//- x = max(x, y), a NaN in either wins
+struct maxOrNaNEqOp
+{
+    void operator()(scalar& x, const scalar& y) const
+    {
+        x = (x != x || y <= x) ? x : y;
+    }
+};
+
 template<class Type>
 std::size_t bytes(const UList<Type>& list)
 {
@@ -319,6 +328,10 @@ void Foam::femdemPartition::build(const UList<vector2D>& x)
     solid_.reset(new femdemSolid(mesh_, localDict(dict_)));
     // Every node and joint counted in the budget of exactly one rank
     solid_->setBudgetShare(owned_);
+    if (trackWork_)
+    {
+        solid_->trackWorkDisplacement();
+    }
     setExchange();
     x0_ = solid_->x();
     moveBound_ = 0;
@@ -403,16 +416,17 @@ void Foam::femdemPartition::setGlobalState
 Foam::scalar Foam::femdemPartition::makeStepGlobal(femdemSolid& solid)
 {
     // Each a largest over triangles or nodes: the global value is the
-    // largest over the ranks (as min of the negatives: MPI's own reduction)
-    FixedList<scalar, 5> d = stepData(solid);
-    for (scalar& v : d)
-    {
-        v = -v;
-        reduce(v, minOp<scalar>());
-        v = -v;
-    }
-    setStepData(solid, d);
-    return d[3];
+    // largest over the ranks, all in one gather and scatter (one message
+    // each way per tree level, not one reduction per value). A NaN (a
+    // diverging solid) wins, so that every rank stops
+    const FixedList<scalar, 5> mine = stepData(solid);
+    List<scalar> d(mine.begin(), mine.end());
+    Pstream::listCombineGather(d, maxOrNaNEqOp());
+    Pstream::listCombineScatter(d);
+    FixedList<scalar, 5> all;
+    forAll(all, i) all[i] = d[i];
+    setStepData(solid, all);
+    return all[3];
 }
 
 
@@ -443,7 +457,8 @@ Foam::femdemPartition::femdemPartition
     tLast_(0),
     nChecks_(0),
     nRebuilds_(0),
-    rebuild_(false)
+    rebuild_(false),
+    trackWork_(false)
 {
     if (!(haloWidth_ > 0))
     {
@@ -536,6 +551,124 @@ Foam::label Foam::femdemPartition::advance(const scalar interval)
         rebuild();
     }
     return solid_->advance(interval);
+}
+
+
+Foam::label Foam::femdemPartition::advance
+(
+    const scalar interval,
+    const UList<vector2D>& globalForce
+)
+{
+    if (rebuild_)
+    {
+        rebuild();
+    }
+    if (globalForce.size() != 3*nGlobal_)
+    {
+        FatalErrorInFunction
+            << globalForce.size() << " nodal forces for a solid of "
+            << 3*nGlobal_ << " nodes" << exit(FatalError);
+    }
+    List<vector2D>& f = solid_->externalForce();
+    forAll(globalTriangle_, t)
+    {
+        const label g = globalTriangle_[t];
+        for (label k = 0; k < 3; ++k)
+        {
+            f[3*t + k] = globalForce[3*g + k];
+        }
+    }
+    return solid_->advance(interval);
+}
+
+
+void Foam::femdemPartition::update()
+{
+    if (rebuild_)
+    {
+        rebuild();
+    }
+}
+
+
+Foam::label Foam::femdemPartition::advance
+(
+    const scalar interval,
+    femdemSolid::subStepHook& hook
+)
+{
+    update();
+    return solid_->advance(interval, hook);
+}
+
+
+Foam::labelList Foam::femdemPartition::localNodes
+(
+    const labelList& globalNodes
+) const
+{
+    labelList local(globalNodes.size(), -1);
+    forAll(globalNodes, i)
+    {
+        const label g = globalNodes[i]/3;
+        const label* it = std::lower_bound
+        (
+            globalTriangle_.cbegin(), globalTriangle_.cend(), g
+        );
+        if (it != globalTriangle_.cend() && *it == g)
+        {
+            local[i] = 3*label(it - globalTriangle_.cbegin())
+              + globalNodes[i]%3;
+        }
+    }
+    return local;
+}
+
+
+void Foam::femdemPartition::gatherSubset
+(
+    const labelList& localNode,
+    const UList<vector2D>& local,
+    List<vector2D>& buf
+) const
+{
+    // One contributor per entry (its owner): x + 0 = x, bitwise
+    forAll(localNode, i)
+    {
+        const label n = localNode[i];
+        buf[i] = n >= 0 && owned_[n/3] ? local[n] : vector2D::zero;
+    }
+    Pstream::listCombineGather(buf, plusEqOp<vector2D>());
+    Pstream::listCombineScatter(buf);
+}
+
+
+void Foam::femdemPartition::gatherSubset
+(
+    const labelList& localNode,
+    const UList<vector2D>& a,
+    const UList<vector2D>& b,
+    List<vector2D>& buf
+) const
+{
+    const label n = localNode.size();
+    forAll(localNode, i)
+    {
+        const label j = localNode[i];
+        const bool mine = j >= 0 && owned_[j/3];
+        buf[i] = mine ? a[j] : vector2D::zero;
+        buf[n + i] = mine ? b[j] : vector2D::zero;
+    }
+    Pstream::listCombineGather(buf, plusEqOp<vector2D>());
+    Pstream::listCombineScatter(buf);
+}
+
+
+void Foam::femdemPartition::trackWorkDisplacement()
+{
+    trackWork_ = true;
+    solid_->trackWorkDisplacement();
 }
 
 

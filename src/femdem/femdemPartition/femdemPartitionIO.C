@@ -17,6 +17,8 @@ Description
 #include "Pstream.H"
 #include "PstreamReduceOps.H"
 #include "OSspecific.H"
+#include "OFstream.H"
+#include "IFstream.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -92,11 +94,7 @@ const Foam::femdemSolid& Foam::femdemPartition::gather()
     }
     brokenValue = gatherJoints(brokenValue, false);
 
-    // The accounts summed, the damage onset if any rank saw it
-    scalarField acc(solid_->energyAccounts());
-    const bool damaged = acc[9] != 0;
-    reduce(acc, sumOp<scalarField>());
-    acc[9] = returnReduce(damaged, orOp<bool>());
+    const scalarList acc = summedAccounts();
 
     if (Pstream::master())
     {
@@ -137,6 +135,7 @@ void Foam::femdemPartition::writeState(const fileName& file)
     {
         femdemOutput::writeState(g, file);
     }
+    appendRankAccounts(file, Pstream::master());
 }
 
 
@@ -169,11 +168,17 @@ bool Foam::femdemPartition::readState(const fileName& file)
             deltaT = global_->stableTimeStep();
         }
     }
+    List<scalarList> rankAcc;
+    if (Pstream::master() && found)
+    {
+        rankAcc = readRankAccounts(file);
+    }
     Pstream::scatter(found);
     if (!found)
     {
         return false;
     }
+    Pstream::scatter(rankAcc);
     Pstream::scatter(x);
     Pstream::scatter(v);
     Pstream::scatter(damage);
@@ -184,9 +189,81 @@ bool Foam::femdemPartition::readState(const fileName& file)
     Pstream::scatter(deltaT);
     setGlobalState(x, v, damage, broken, time, timeIndex, deltaT);
 
+    takeAccounts(acc, rankAcc);
+    return true;
+}
+
+
+void Foam::femdemPartition::takeAccounts
+(
+    const UList<scalar>& acc,
+    const List<scalarList>& rankAcc
+)
+{
+    if (rankAcc.size() == Pstream::nProcs())
+    {
+        solid_->setEnergyAccounts(rankAcc[Pstream::myProcNo()]);
+    }
+    else
+    {
+        shareAccounts(acc);
+    }
+}
+
+
+Foam::List<Foam::scalarList> Foam::femdemPartition::readRankAccounts
+(
+    const fileName& file
+)
+{
+    IFstream is(file);
+    const dictionary dict(is);
+    List<scalarList> rankAcc;
+    if (dict.readIfPresent("rankEnergyAccounts", rankAcc))
+    {
+        for (const scalarList& a : rankAcc)
+        {
+            if (a.size() != 10)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "entry 'rankEnergyAccounts': 10 values per rank"
+                    << " needed, got " << a.size() << exit(FatalIOError);
+            }
+        }
+    }
+    return rankAcc;
+}
+
+
+void Foam::femdemPartition::appendRankAccounts
+(
+    const fileName& file,
+    const bool append
+) const
+{
+    List<scalarList> rankAcc(Pstream::nProcs());
+    rankAcc[Pstream::myProcNo()] = solid_->energyAccounts();
+    Pstream::gatherList(rankAcc);
+    Pstream::scatterList(rankAcc);
+    if (append)
+    {
+        // Each rank's budget share: a restart on as many ranks continues
+        // every rank's sums, so the totals stay bitwise those of one run
+        OFstream os
+        (
+            file, IOstream::ASCII, IOstream::currentVersion,
+            IOstream::UNCOMPRESSED, true
+        );
+        os.precision(17);
+        os.writeEntry("rankEnergyAccounts", rankAcc);
+    }
+}
+
+
+void Foam::femdemPartition::shareAccounts(const UList<scalar>& acc)
+{
     // The accounts are sums over the ranks (the damage onset is global,
-    // femdemSolid::setDamageOnset): the master takes the state's, the
-    // others start from zero, all with the state's damage onset flag
+    // femdemSolid::setDamageOnset)
     scalarList local(10, Zero);
     if (Pstream::master())
     {
@@ -194,7 +271,65 @@ bool Foam::femdemPartition::readState(const fileName& file)
     }
     local[9] = acc[9];
     solid_->setEnergyAccounts(local);
-    return true;
+}
+
+
+Foam::scalarList Foam::femdemPartition::summedAccounts() const
+{
+    scalarField acc(solid_->energyAccounts());
+    const bool damaged = acc[9] != 0;
+    reduce(acc, sumOp<scalarField>());
+    acc[9] = returnReduce(damaged, orOp<bool>());
+    return std::move(acc);
+}
+
+
+void Foam::femdemPartition::syncCopy(femdemSolid& whole) const
+{
+    List<vector2D> x = gatherNodes(solid_->x());
+    List<vector2D> v = gatherNodes(solid_->v());
+    scalarList damage = gatherJoints(solid_->jointDamage());
+    scalarList brokenValue(solid_->nJoints());
+    forAll(brokenValue, j)
+    {
+        brokenValue[j] = solid_->jointBroken()[j];
+    }
+    brokenValue = gatherJoints(brokenValue);
+    boolList broken(brokenValue.size());
+    forAll(broken, j)
+    {
+        broken[j] = brokenValue[j] != 0;
+    }
+    whole.setState(x, v, damage, broken, solid_->time(), solid_->timeIndex());
+    // The step data (the same on every rank after each step) and the step
+    setStepData(whole, stepData(*solid_));
+    whole.restoreStableTimeStep(solid_->stableTimeStep());
+}
+
+
+void Foam::femdemPartition::setStateFrom
+(
+    const femdemSolid& whole,
+    const fileName& stateFile
+)
+{
+    if (whole.nNodes() != 3*nGlobal_)
+    {
+        FatalErrorInFunction
+            << "a solid of " << whole.nNodes() << " nodes for a partition of "
+            << 3*nGlobal_ << exit(FatalError);
+    }
+    scalarList broken(whole.nJoints());
+    forAll(broken, j)
+    {
+        broken[j] = whole.jointBroken()[j];
+    }
+    setGlobalState
+    (
+        whole.x(), whole.v(), whole.jointDamage(), broken, whole.time(),
+        whole.timeIndex(), whole.stableTimeStep()
+    );
+    takeAccounts(whole.energyAccounts(), readRankAccounts(stateFile));
 }
 
 

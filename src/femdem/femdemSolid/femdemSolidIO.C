@@ -331,6 +331,10 @@ void Foam::femdemSolid::setState
             << " solid of " << x_.size() << " nodes and " << broken_.size()
             << " joints" << exit(FatalError);
     }
+    // The continuous view follows joints that break (incremental update);
+    // a state with a joint intact that is broken now needs a new view
+    bool healed = false;
+    forAll(broken_, j) healed = healed || (broken_[j] && !broken[j]);
     x_.transfer(x);
     v_.transfer(v);
     damage_.transfer(damage);
@@ -338,7 +342,10 @@ void Foam::femdemSolid::setState
     nBroken_ = 0;
     forAll(broken_, j) if (broken_[j]) ++nBroken_;
     markFreeEdges();
-    view_.clear();
+    if (healed)
+    {
+        view_.clear();
+    }
     time_ = time;
     step_ = timeIndex;
 }

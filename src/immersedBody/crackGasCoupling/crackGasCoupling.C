@@ -474,6 +474,112 @@ Foam::label Foam::crackGasCoupling::advanceSolid
 }
 
 
+namespace
+{
+using namespace Foam;
+
+//- The network's sub-steps on a partitioned solid through a whole copy
+class partitionedSubSteps
+:
+    public femdemSolid::subStepHook
+{
+    crackNetwork::subSteps inner_;
+    const femdemPartition& partition_;
+    femdemSolid& copy_;
+    const labelList nodes_;
+    const labelList localNode_;
+    List<vector2D> buf_, buf2_;
+    bool first_;
+
+public:
+
+    partitionedSubSteps
+    (
+        crackNetwork& net,
+        const UList<vector2D>& otherForces,
+        const femdemPartition& partition,
+        femdemSolid& copy
+    )
+    :
+        inner_(net, otherForces),
+        partition_(partition),
+        copy_(copy),
+        nodes_(net.nodes()),
+        localNode_(partition.localNodes(nodes_)),
+        buf_(nodes_.size()),
+        buf2_(2*nodes_.size()),
+        first_(true)
+    {}
+
+    virtual scalar beforeSubStep(femdemSolid& local)
+    {
+        // The network's nodes as they are now, the same on every rank
+        List<vector2D>& x = copy_.xRef();
+        List<vector2D>& v = copy_.vRef();
+        partition_.gatherSubset(localNode_, local.x(), local.v(), buf2_);
+        const label n = nodes_.size();
+        forAll(nodes_, i)
+        {
+            x[nodes_[i]] = buf2_[i];
+            v[nodes_[i]] = buf2_[n + i];
+        }
+
+        // The forces in the copy (the other forces plus the network's)
+        const scalar h = inner_.beforeSubStep(copy_);
+        const List<vector2D>& F = copy_.externalForce();
+        List<vector2D>& f = local.externalForce();
+        if (first_)
+        {
+            const labelList& g = partition_.globalTriangles();
+            forAll(g, t)
+            {
+                for (label k = 0; k < 3; ++k) f[3*t + k] = F[3*g[t] + k];
+            }
+            first_ = false;
+        }
+        else
+        {
+            // Only the network's nodes change between sub-steps
+            forAll(nodes_, i)
+            {
+                if (localNode_[i] >= 0) f[localNode_[i]] = F[nodes_[i]];
+            }
+        }
+        return h;
+    }
+
+    virtual void afterSubStep(const femdemSolid& local)
+    {
+        List<vector2D>& d = copy_.workDisplacementRef();
+        partition_.gatherSubset(localNode_, local.workDisplacement(), buf_);
+        forAll(nodes_, i) d[nodes_[i]] = buf_[i];
+        inner_.afterSubStep(copy_);
+    }
+};
+
+} // End anonymous namespace
+
+
+Foam::label Foam::crackGasCoupling::advanceSolid
+(
+    femdemPartition& partition,
+    femdemSolid& copy,
+    const List<vector2D>& otherForces,
+    const scalar dt
+)
+{
+    // The halo rebuilt first: the hook takes the local node numbers
+    partition.update();
+    // The copy's work displacement starts from zero, as the local solid's
+    copy.workDisplacementRef() = Zero;
+    partitionedSubSteps hook(net_, otherForces, partition, copy);
+    const label n = partition.advance(dt, hook);
+    partition.syncCopy(copy);
+    net_.endStep(copy.x(), dt);
+    return n;
+}
+
+
 void Foam::crackGasCoupling::exchange(blastFluidSolver& fluid)
 {
     // What entered the mouths leaves their cells; handed-over gas enters

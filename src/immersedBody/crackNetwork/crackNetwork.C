@@ -870,6 +870,26 @@ Foam::scalar Foam::crackNetwork::stableSubStep
 }
 
 
+Foam::labelList Foam::crackNetwork::nodes() const
+{
+    DynamicList<label> n(4*cvJoint_.size() + voidNode_.size());
+    for (const label j : cvJoint_)
+    {
+        for (const label node : topo_.jointNodes()[j]) n.append(node);
+    }
+    n.append(voidNode_);
+    labelList sorted(std::move(n));
+    Foam::sort(sorted);
+    label m = 0;
+    forAll(sorted, i)
+    {
+        if (i == 0 || sorted[i] != sorted[m - 1]) sorted[m++] = sorted[i];
+    }
+    sorted.setSize(m);
+    return sorted;
+}
+
+
 void Foam::crackNetwork::addWork(const UList<vector2D>& d)
 {
     forAll(cvJoint_, i)

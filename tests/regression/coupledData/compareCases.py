@@ -14,6 +14,9 @@ def numbers(path):
     text = open(path).read()
     text = text[text.find("}") + 1:]           # skip FoamFile header
     text = re.sub(r"//.*", "", text)
+    # A partitioned run's per-rank split of the energy accounts (their sums
+    # are the entry energyAccounts): bookkeeping of that rank count
+    text = re.sub(r"rankEnergyAccounts[^;]*;", "", text)
     toks = re.findall(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", text)
     return np.array([float(t) for t in toks])
 
