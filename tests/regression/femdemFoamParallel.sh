@@ -18,7 +18,9 @@
 # a serial run continued on 3 ranks and a 2-rank run continued serially all
 # end with x and v byte-identical to the uninterrupted serial run (the
 # state is one global femdemState in the case directory).
-# The memory line (local solid per rank, 1 -> 2 -> 3 ranks) is printed.
+# The brazilianDisc tutorial with Allrun -quick -np 2 gives the serial
+# summary.json. The memory line (local solid per rank, 1 -> 2 -> 3 ranks) is
+# printed.
 set -u
 cd "$JWLIBFOAM_TEST_DIR" || exit 1
 fail=0
@@ -140,6 +142,39 @@ setEnd pullToSerial $half && runCase pullToSerial 2 && setEnd pullToSerial 8e-5 
 setEnd impactSerialTo3 $half && runCase impactSerialTo3 1 && setEnd impactSerialTo3 8e-5 \
     && sed -i "s/startFrom latestTime;/startFrom startTime;/; s/startTime 0;/startTime $half;/" impactSerialTo3/system/controlDict \
     && runCase impactSerialTo3 3 && same "restart serial -> 3 ranks" impactSerial impactSerialTo3
+
+# 4. The brazilianDisc tutorial, Allrun -quick and Allrun -quick -np 2: the
+#    same figures (summary.json) and the same final positions
+root=$(cd "$(dirname "$0")/../.." && pwd)
+for d in discSerial disc2; do
+    rm -rf "$d" && cp -r "$root/tutorials/femdemFoam/brazilianDisc" "$d"
+done
+(cd discSerial && ./Allrun -quick > log.Allrun 2>&1) && (cd disc2 && ./Allrun -quick -np 2 > log.Allrun 2>&1) \
+    || { echo ">> brazilianDisc: Allrun -quick [-np 2] failed  <-- FAIL"; fail=1; }
+if [ -f disc2/summary.json ]; then
+    lastDisc=$(ls -d discSerial/[0-9]* | sort -t/ -k2 -g | tail -1); lastDisc=${lastDisc##*/}
+    same=no; cmp -s <(nodes "discSerial/$lastDisc/femdemState") <(nodes "disc2/$lastDisc/femdemState") && same=yes
+    diffs=$(python3 - discSerial/summary.json disc2/summary.json <<'PY'
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:])
+def flat(x, p=''):
+    if isinstance(x, dict):
+        for k, v in x.items():
+            yield from flat(v, p + '/' + k)
+    elif isinstance(x, list):
+        for i, v in enumerate(x):
+            yield from flat(v, f'{p}[{i}]')
+    else:
+        yield p, x
+fa, fb = dict(flat(a)), dict(flat(b))
+bad = [k for k in fa if fa[k] != fb.get(k)]
+print(len(fa), len(bad), ' '.join(bad[:5]))
+PY
+)
+    read -r nFig nBad badKeys <<< "$diffs"
+    echo ">> brazilianDisc tutorial, Allrun -quick -np 2 vs serial: $nFig summary.json entries, $nBad different ${badKeys:-}; x, v at $lastDisc s identical: $same"
+    [ "$nBad" = 0 ] && [ "$same" = yes ] || { echo ">> brazilianDisc on 2 ranks differs from serial  <-- FAIL"; fail=1; }
+fi
 
 # Memory of the solid per rank, 1 -> 2 -> 3 ranks (same mesh, femdemMesh)
 echo ">> memory, serial: $(grep -m1 'Solid memory:' pullSerial/log.femdemFoam)"
