@@ -531,9 +531,13 @@ int main(int argc, char *argv[])
             Pstream::master()
           ? scalar(partition->globalSolid().memoryBytes())/1e6
           : 0;
+        const scalar tx = partition->exchangeTime();
         Info<< nl << "Halo rebuilds " << partition->nRebuilds()
             << ", exact displacement checks "
             << partition->nDisplacementChecks() << nl
+            << "Per-step exchange (waiting for the other ranks and the"
+            << " messages) " << returnReduce(tx, minOp<scalar>()) << " to "
+            << returnReduce(tx, maxOp<scalar>()) << " s per rank" << nl
             << "The master's gathered copy of the whole solid (output): "
             << copyMB << " MB" << endl;
     }

@@ -228,6 +228,16 @@ int main(int argc, char *argv[])
         << tProject << " s, setFluidFraction " << tFraction
         << " s, wallForces " << tForces << " s), solid " << tSolid << " s"
         << nl;
+    if (partitionPtr.valid())
+    {
+        // Time a rank waits for the others in the solid's sub-steps: the
+        // load imbalance of the partition and the messages
+        const scalar tx = partitionPtr->exchangeTime();
+        Info<< "Partitioned solid: per-step exchange "
+            << returnReduce(tx, minOp<scalar>()) << " to "
+            << returnReduce(tx, maxOp<scalar>()) << " s per rank, halo"
+            << " rebuilds " << partitionPtr->nRebuilds() << nl;
+    }
     Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
         << "  ClockTime = " << runTime.elapsedClockTime() << " s"
         << nl << "End\n" << endl;

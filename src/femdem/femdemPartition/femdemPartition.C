@@ -12,6 +12,7 @@ License
 #include "PstreamReduceOps.H"
 #include "DynamicList.H"
 #include "ListOps.H"
+#include "clockValue.H"
 #include <algorithm>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -325,7 +326,16 @@ void Foam::femdemPartition::build(const UList<vector2D>& x)
     nOwned_ = std::count(owned_.begin(), owned_.end(), true);
 
     mesh_ = solidMeshRenumber::subset(globalMesh_, globalTriangle_);
+    // A local part never becomes the active solid (function objects read
+    // the whole one: a copy of it, when the solver holds one) unless the
+    // part it replaces was
+    const femdemSolid* active = femdemSolid::active();
+    const bool keepActive = active && active != solid_.get();
     solid_.reset(new femdemSolid(mesh_, localDict(dict_)));
+    if (keepActive)
+    {
+        femdemSolid::setActive(active);
+    }
     // Every node and joint counted in the budget of exactly one rank
     solid_->setBudgetShare(owned_);
     if (trackWork_)
@@ -458,6 +468,7 @@ Foam::femdemPartition::femdemPartition
     nChecks_(0),
     nRebuilds_(0),
     rebuild_(false),
+    exchangeTime_(0),
     trackWork_(false)
 {
     if (!(haloWidth_ > 0))
@@ -756,6 +767,8 @@ void Foam::femdemPartition::afterStep(femdemSolid& solid)
     List<vector2D>& x = solid.xRef();
     List<vector2D>& v = solid.vRef();
 
+    const clockValue t0(clockValue::now());
+
     // Halo nodes from their owners: receives posted first, sends, wait
     const label start = UPstream::nRequests();
     forAll(procs_, i)
@@ -805,6 +818,7 @@ void Foam::femdemPartition::afterStep(femdemSolid& solid)
 
     // The same step and the same divergence check on every rank
     const scalar s2 = makeStepGlobal(solid);
+    exchangeTime_ += t0.elapsed();
 
     // The halo holds while nothing moved by haloWidth/2; it is rebuilt
     // from haloWidth/4 on: a cheap bound first (the largest speed times
