@@ -16,7 +16,10 @@
 #    summed in another order differ by round-off, which must stay
 #    round-off; apertures a few ulp above 0 once flipped the small cells'
 #    neighbourhoods, doc/theory-coupling.md "Parallel"); a 2-rank restart
-#    against the 2-rank run (1e-12).
+#    against the 2-rank run (1e-12). The 2-rank runs partition the solid
+#    (jwlIbFoam's default); the replicated solid (partition { partitioned
+#    false; }: every rank integrates the whole solid) against serial after
+#    50 steps too (1e-8).
 cd "$JWLIBFOAM_TEST_DIR" || exit 1
 data=$JWLIBFOAM_PROJECT/tests/regression/coupledData
 compare=$data/compareCases.py
@@ -110,6 +113,20 @@ else
     echo ">> 2 ranks (METIS) vs serial at 1 ms (500 steps), reconstructed: max relative difference $d (tolerance 1e-8)$([ $ok = 1 ] || echo '  <-- FAIL')"
     [ $ok = 1 ] || fail=1
 fi
+
+# The replicated solid on 2 ranks to 0.1 ms against serial
+rm -rf replicated && mkdir replicated && cp -r serial100/{0,constant,system} replicated/
+cd replicated
+echo 'partition { partitioned false; }' >> constant/femdemProperties
+decomposePar > log.decomposePar 2>&1 || { echo ">> replicated: decomposePar failed <-- FAIL"; exit 1; }
+mpirun -np 2 jwlIbFoam -parallel > log.jwlIbFoam 2>&1 || { tail -5 log.jwlIbFoam; echo ">> replicated: parallel run failed <-- FAIL"; exit 1; }
+grep -q "Solid replicated" log.jwlIbFoam || { echo ">> replicated: the log does not say 'Solid replicated' <-- FAIL"; fail=1; }
+reconstructPar -latestTime > log.reconstructPar 2>&1 || { echo ">> replicated: reconstructPar failed <-- FAIL"; exit 1; }
+cd ..
+d=$(/usr/bin/python3 $compare serial100/0.0001 replicated/0.0001 | tail -1 | awk '{print $2}')
+ok=$(/usr/bin/python3 -c "print(int($d <= 1e-8))")
+echo ">> 2 ranks, replicated solid (partition.partitioned false) vs serial at 0.1 ms (50 steps): max relative difference $d (tolerance 1e-8)$([ $ok = 1 ] || echo '  <-- FAIL')"
+[ $ok = 1 ] || fail=1
 
 # Two-rank restart from 0.5 ms
 rm -rf parallelRestart && mkdir parallelRestart && cp -r parallel/{0,constant,system} parallelRestart/
