@@ -532,7 +532,9 @@ int main(int argc, char *argv[])
           ? scalar(partition->globalSolid().memoryBytes())/1e6
           : 0;
         const scalar tx = partition->exchangeTime();
-        Info<< nl << "Halo rebuilds " << partition->nRebuilds()
+        Info<< nl << "Halo rebuilds " << partition->nRebuilds() << " ("
+            << returnReduce(scalar(partition->rebuildTime()), maxOp<scalar>())
+            << " s)"
             << ", exact displacement checks "
             << partition->nDisplacementChecks() << nl
             << "Per-step exchange (waiting for the other ranks and the"

@@ -236,7 +236,9 @@ int main(int argc, char *argv[])
         Info<< "Partitioned solid: per-step exchange "
             << returnReduce(tx, minOp<scalar>()) << " to "
             << returnReduce(tx, maxOp<scalar>()) << " s per rank, halo"
-            << " rebuilds " << partitionPtr->nRebuilds() << nl;
+            << " rebuilds " << partitionPtr->nRebuilds() << " ("
+            << returnReduce(scalar(partitionPtr->rebuildTime()), maxOp<scalar>())
+            << " s)" << nl;
     }
     Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
         << "  ClockTime = " << runTime.elapsedClockTime() << " s"

@@ -352,6 +352,7 @@ void Foam::femdemPartition::build(const UList<vector2D>& x)
 
 void Foam::femdemPartition::rebuild()
 {
+    const clockValue t0(clockValue::now());
     // The state, global, from the owners; the accounts stay with the rank
     // (ownership is static)
     List<vector2D> X = gatherNodes(solid_->x());
@@ -371,6 +372,7 @@ void Foam::femdemPartition::rebuild()
     );
     solid_->setEnergyAccounts(acc);
     ++nRebuilds_;
+    rebuildTime_ += t0.elapsed();
     if (debug)
     {
         Pout<< "femdemPartition: halo rebuilt at time " << solid_->time()
@@ -469,6 +471,7 @@ Foam::femdemPartition::femdemPartition
     nRebuilds_(0),
     rebuild_(false),
     exchangeTime_(0),
+    rebuildTime_(0),
     trackWork_(false)
 {
     if (!(haloWidth_ > 0))
