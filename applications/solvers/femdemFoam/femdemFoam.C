@@ -302,8 +302,13 @@ int main(int argc, char *argv[])
         serialSolid().resetEnergyBudget();
     }
 
+    // The whole solid's joints (a partitioned solid's local part has fewer)
+    const label nJoints =
+        partition.valid()
+      ? partition->globalTopology().nJoints()
+      : serialSolid().nJoints();
     Info<< "FEMDEM solid: " << mesh.nTriangles() << " triangles, "
-        << jointTopology(mesh).nJoints() << " joints, "
+        << nJoints << " joints, "
         << localSolid().materials().size() << " material(s)" << nl
         << "Stable time step: " << localSolid().stableTimeStep() << " s ("
         << std::ceil(runTime.deltaTValue()/localSolid().stableTimeStep())
@@ -325,7 +330,7 @@ int main(int argc, char *argv[])
         crackLog()
             << "# joints as they break (time of the log after the breakage):"
             << " time x0 y0 x1 y1 (initial positions)" << nl;
-        crackLogged.setSize(jointTopology(mesh).nJoints(), false);
+        crackLogged.setSize(nJoints, false);
         energyLog().precision(10);
         reactionLog().precision(10);
         fragmentLog().precision(10);

@@ -355,15 +355,10 @@ void Foam::femdemPartition::rebuild()
     const clockValue t0(clockValue::now());
     // The state, global, from the owners; the accounts stay with the rank
     // (ownership is static)
-    List<vector2D> X = gatherNodes(solid_->x());
-    List<vector2D> V = gatherNodes(solid_->v());
-    scalarList damage = gatherJoints(solid_->jointDamage());
-    scalarList broken(solid_->nJoints());
-    forAll(broken, j)
-    {
-        broken[j] = solid_->jointBroken()[j];
-    }
-    broken = gatherJoints(broken);
+    const List<vector2D> X = gatherNodes(solid_->x());
+    const List<vector2D> V = gatherNodes(solid_->v());
+    const scalarList damage = gatherJoints(solid_->jointDamage());
+    const boolList broken = gatherBroken();
     const scalarList acc = solid_->energyAccounts();
     setGlobalState
     (
@@ -387,7 +382,7 @@ void Foam::femdemPartition::setGlobalState
     const UList<vector2D>& X,
     const UList<vector2D>& V,
     const UList<scalar>& damage,
-    const UList<scalar>& broken,
+    const UList<bool>& broken,
     const scalar time,
     const label timeIndex,
     const scalar deltaT
@@ -415,7 +410,7 @@ void Foam::femdemPartition::setGlobalState
             3*globalTriangle_[topo.jointTriangleA()[j]] + topo.jointEdgeA()[j]
         ];
         d[j] = damage[g];
-        b[j] = broken[g] != 0;
+        b[j] = broken[g];
     }
     solid_->setState(x, v, d, b, time, timeIndex);
     solid_->restoreStableTimeStep(deltaT);
@@ -762,6 +757,24 @@ Foam::scalarList Foam::femdemPartition::gatherJoints
         Pstream::listCombineScatter(values);
     }
     return values;
+}
+
+
+Foam::boolList Foam::femdemPartition::gatherBroken(const bool toAll) const
+{
+    const boolList& local = solid_->jointBroken();
+    scalarList value(local.size());
+    forAll(local, j)
+    {
+        value[j] = local[j];
+    }
+    value = gatherJoints(value, toAll);
+    boolList broken(value.size());
+    forAll(broken, j)
+    {
+        broken[j] = value[j] != 0;
+    }
+    return broken;
 }
 
 

@@ -87,23 +87,13 @@ const Foam::femdemSolid& Foam::femdemPartition::gather()
     List<vector2D> x = gatherNodes(solid_->x(), false);
     List<vector2D> v = gatherNodes(solid_->v(), false);
     scalarList damage = gatherJoints(solid_->jointDamage(), false);
-    scalarList brokenValue(solid_->nJoints());
-    forAll(brokenValue, j)
-    {
-        brokenValue[j] = solid_->jointBroken()[j];
-    }
-    brokenValue = gatherJoints(brokenValue, false);
+    boolList broken = gatherBroken(false);
 
     const scalarList acc = summedAccounts();
 
     if (Pstream::master())
     {
         femdemSolid& global = globalCopy();
-        boolList broken(brokenValue.size());
-        forAll(broken, j)
-        {
-            broken[j] = brokenValue[j] != 0;
-        }
         global.setState
         (
             x, v, damage, broken, solid_->time(), solid_->timeIndex()
@@ -146,7 +136,8 @@ bool Foam::femdemPartition::readState(const fileName& file)
     // the state from it
     bool found = false;
     List<vector2D> x, v;
-    scalarList damage, broken, acc;
+    scalarList damage, acc;
+    boolList broken;
     scalar time = 0, deltaT = 0;
     label timeIndex = 0;
     if (Pstream::master())
@@ -157,11 +148,7 @@ bool Foam::femdemPartition::readState(const fileName& file)
             x = global_->x();
             v = global_->v();
             damage = global_->jointDamage();
-            broken.setSize(global_->nJoints());
-            forAll(broken, j)
-            {
-                broken[j] = global_->jointBroken()[j];
-            }
+            broken = global_->jointBroken();
             acc = global_->energyAccounts();
             time = global_->time();
             timeIndex = global_->timeIndex();
@@ -289,17 +276,7 @@ void Foam::femdemPartition::syncCopy(femdemSolid& whole) const
     List<vector2D> x = gatherNodes(solid_->x());
     List<vector2D> v = gatherNodes(solid_->v());
     scalarList damage = gatherJoints(solid_->jointDamage());
-    scalarList brokenValue(solid_->nJoints());
-    forAll(brokenValue, j)
-    {
-        brokenValue[j] = solid_->jointBroken()[j];
-    }
-    brokenValue = gatherJoints(brokenValue);
-    boolList broken(brokenValue.size());
-    forAll(broken, j)
-    {
-        broken[j] = brokenValue[j] != 0;
-    }
+    boolList broken = gatherBroken();
     whole.setState(x, v, damage, broken, solid_->time(), solid_->timeIndex());
     // The step data (the same on every rank after each step) and the step
     setStepData(whole, stepData(*solid_));
@@ -319,14 +296,9 @@ void Foam::femdemPartition::setStateFrom
             << "a solid of " << whole.nNodes() << " nodes for a partition of "
             << 3*nGlobal_ << exit(FatalError);
     }
-    scalarList broken(whole.nJoints());
-    forAll(broken, j)
-    {
-        broken[j] = whole.jointBroken()[j];
-    }
     setGlobalState
     (
-        whole.x(), whole.v(), whole.jointDamage(), broken, whole.time(),
+        whole.x(), whole.v(), whole.jointDamage(), whole.jointBroken(), whole.time(),
         whole.timeIndex(), whole.stableTimeStep()
     );
     takeAccounts(whole.energyAccounts(), readRankAccounts(stateFile));
