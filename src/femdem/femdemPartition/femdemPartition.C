@@ -363,7 +363,7 @@ void Foam::femdemPartition::rebuild()
     setGlobalState
     (
         X, V, damage, broken, solid_->time(), solid_->timeIndex(),
-        solid_->stableTimeStep()
+        solid_->timeSteps()
     );
     solid_->setEnergyAccounts(acc);
     ++nRebuilds_;
@@ -385,7 +385,7 @@ void Foam::femdemPartition::setGlobalState
     const UList<bool>& broken,
     const scalar time,
     const label timeIndex,
-    const scalar deltaT
+    const FixedList<scalar, 2>& timeSteps
 )
 {
     // New halo and local solid at the present positions, with the state
@@ -413,7 +413,7 @@ void Foam::femdemPartition::setGlobalState
         b[j] = broken[g];
     }
     solid_->setState(x, v, d, b, time, timeIndex);
-    solid_->restoreStableTimeStep(deltaT);
+    solid_->restoreTimeSteps(timeSteps);
     x0_ = solid_->x();
     tLast_ = time;
     rebuild_ = false;

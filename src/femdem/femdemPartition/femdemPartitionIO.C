@@ -99,7 +99,7 @@ const Foam::femdemSolid& Foam::femdemPartition::gather()
             x, v, damage, broken, solid_->time(), solid_->timeIndex()
         );
         global.setEnergyAccounts(acc);
-        global.restoreStableTimeStep(solid_->stableTimeStep());
+        global.restoreTimeSteps(solid_->timeSteps());
         return global;
     }
     return *solid_;
@@ -138,7 +138,8 @@ bool Foam::femdemPartition::readState(const fileName& file)
     List<vector2D> x, v;
     scalarList damage, acc;
     boolList broken;
-    scalar time = 0, deltaT = 0;
+    scalar time = 0;
+    FixedList<scalar, 2> steps(Zero);
     label timeIndex = 0;
     if (Pstream::master())
     {
@@ -152,7 +153,7 @@ bool Foam::femdemPartition::readState(const fileName& file)
             acc = global_->energyAccounts();
             time = global_->time();
             timeIndex = global_->timeIndex();
-            deltaT = global_->stableTimeStep();
+            steps = global_->timeSteps();
         }
     }
     List<scalarList> rankAcc;
@@ -173,8 +174,8 @@ bool Foam::femdemPartition::readState(const fileName& file)
     Pstream::scatter(acc);
     Pstream::scatter(time);
     Pstream::scatter(timeIndex);
-    Pstream::scatter(deltaT);
-    setGlobalState(x, v, damage, broken, time, timeIndex, deltaT);
+    Pstream::scatter(steps);
+    setGlobalState(x, v, damage, broken, time, timeIndex, steps);
 
     takeAccounts(acc, rankAcc);
     return true;
@@ -280,7 +281,7 @@ void Foam::femdemPartition::syncCopy(femdemSolid& whole) const
     whole.setState(x, v, damage, broken, solid_->time(), solid_->timeIndex());
     // The step data (the same on every rank after each step) and the step
     setStepData(whole, stepData(*solid_));
-    whole.restoreStableTimeStep(solid_->stableTimeStep());
+    whole.restoreTimeSteps(solid_->timeSteps());
 }
 
 
@@ -299,7 +300,7 @@ void Foam::femdemPartition::setStateFrom
     setGlobalState
     (
         whole.x(), whole.v(), whole.jointDamage(), whole.jointBroken(), whole.time(),
-        whole.timeIndex(), whole.stableTimeStep()
+        whole.timeIndex(), whole.timeSteps()
     );
     takeAccounts(whole.energyAccounts(), readRankAccounts(stateFile));
 }

@@ -325,6 +325,10 @@ void Foam::femdemSolid::step(const scalar dt)
 {
     const label n = x_.size();
     const scalar tNew = time_ + dt;
+    // Velocities live at the half steps: the force at t_n acts from the
+    // middle of the last step to the middle of this one (the central
+    // difference with variable steps); equal steps give dt itself
+    const scalar kick = lastDt_ > 0 ? 0.5*(lastDt_ + dt) : dt;
 
     if (!trackEnergy_)
     {
@@ -332,7 +336,7 @@ void Foam::femdemSolid::step(const scalar dt)
         addLoads(f_);
         setStableTimeStep(addTriangleForces(f_, f_));
         jointsBroken(cohesive_->addForces(*this, f_));
-        contact_->addForces(*this, f_, dt);
+        contact_->addForces(*this, f_, kick);
         addSymmetryPlaneContact(f_);
     }
     else
@@ -342,7 +346,7 @@ void Foam::femdemSolid::step(const scalar dt)
         addLoads(fLoad_);
         setStableTimeStep(addTriangleForces(fTri_, fDamp_));
         jointsBroken(cohesive_->addForces(*this, fJoint_));
-        contact_->addForces(*this, fContact_, dt);
+        contact_->addForces(*this, fContact_, kick);
         addSymmetryPlaneContact(fContact_);
         for (label i = 0; i < n; ++i)
         {
@@ -367,7 +371,7 @@ void Foam::femdemSolid::step(const scalar dt)
     scalar maxSpeedSqr = 0;
     for (label i = 0; i < n; ++i)
     {
-        v[i] += dt*(im[i]*f[i] + g - alpha*v[i]);
+        v[i] += kick*(im[i]*f[i] + g - alpha*v[i]);
         const scalar s2 = magSqr(v[i]);
         // written so that a NaN is taken as the largest
         maxSpeedSqr = s2 <= maxSpeedSqr ? maxSpeedSqr : s2;
@@ -380,11 +384,11 @@ void Foam::femdemSolid::step(const scalar dt)
     }
     maxSpeedSqr_ = maxSpeedSqr;
 
-    applyConstraints(dt, tNew);
+    applyConstraints(kick, tNew);
 
     if (trackEnergy_)
     {
-        const scalar h = 0.5*dt;
+        const scalar h = 0.5*kick;
         scalar wt = 0, wd = 0, wj = 0, wc = 0, wl = 0, wg = 0;
         // A partitioned solid counts its owned nodes only (the halo's
         // forces are incomplete): weights 1 or 0, bitwise the serial sum

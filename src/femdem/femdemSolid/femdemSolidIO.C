@@ -305,6 +305,8 @@ void Foam::femdemSolid::writeState(Ostream& os) const
     // The step follows the state of the last force evaluation (one step
     // behind x): kept so that a restart takes the same sub-steps
     os.writeEntry("stableTimeStep", deltaT_);
+    // The last step: the next velocity update spans half of it
+    os.writeEntry("lastTimeStep", lastDt_);
     os.precision(oldPrecision);
 }
 
@@ -404,6 +406,14 @@ void Foam::femdemSolid::readState(const dictionary& dict)
     {
         FatalIOErrorInFunction(dict)
             << "entry 'stableTimeStep' must be positive, got " << deltaT_
+            << exit(FatalIOError);
+    }
+    // Older states: the next step's velocity update spans the step itself
+    lastDt_ = 0;
+    if (dict.readIfPresent("lastTimeStep", lastDt_) && !(lastDt_ >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'lastTimeStep' must be >= 0, got " << lastDt_
             << exit(FatalIOError);
     }
 }

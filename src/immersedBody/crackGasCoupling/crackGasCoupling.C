@@ -34,7 +34,7 @@ Foam::crackGasCoupling::crackGasCoupling
     // A misspelt entry would silently take its default
     const wordList valid
     ({"flux", "RKorder", "frictionFactor", "kapilaTerm", "minAperture",
-      "ambient"});
+      "maxVolumeChange", "ambient"});
     for (const word& key : dict.toc())
     {
         if (!valid.found(key))

@@ -42,6 +42,7 @@ Foam::crackNetwork::crackNetwork
     mixture_(mixture),
     gas_(mixture, withFlux(dict)),
     minAperture_(dict.getOrDefault<scalar>("minAperture", 1e-6)),
+    maxVolumeChange_(dict.getOrDefault<scalar>("maxVolumeChange", 0.1)),
     ambientRho_(1.2),
     ambientP_(1e5),
     jointCV_(topology.nJoints(), -1),
@@ -57,6 +58,12 @@ Foam::crackNetwork::crackNetwork
         FatalIOErrorInFunction(dict)
             << "Entry 'minAperture' must be a length > 0, got "
             << minAperture_ << exit(FatalIOError);
+    }
+    if (!(maxVolumeChange_ > 0) || !(maxVolumeChange_ <= 0.5))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'maxVolumeChange' must be a fraction in (0, 0.5], got "
+            << maxVolumeChange_ << exit(FatalIOError);
     }
     if (dict.found("ambient"))
     {
@@ -611,11 +618,17 @@ void Foam::crackNetwork::beginStep
     // The material-1 volume of each gas moves with its gap in the
     // sub-steps (Kapila term), from the content's at the start
     aVNow_.setSize(n); VLast_.setSize(n); KLast_.setSize(n);
+    pathE_.setSize(n);
     forAll(cvJoint_, i)
     {
         aVNow_[i] = content0_[i].aV;
         VLast_[i] = V0_[i];
-        gapPressure(i, V0_[i], aVNow_[i]/V0_[i], &KLast_[i]);
+        pathE_[i] = eInt0_[i];
+        p_[i] = max
+        (
+            gapPressure(i, V0_[i], aVNow_[i]/V0_[i], eInt0_[i], &KLast_[i]),
+            scalar(0)
+        );
     }
     floored_.setSize(n);
     openNow_.setSize(2*n);
@@ -670,13 +683,14 @@ Foam::scalar Foam::crackNetwork::gapPressure
     const label i,
     const scalar V,
     const scalar alpha,
+    const scalar E,
     scalar* K
 ) const
 {
-    // The gas's own state: its content at the step's start, in the gap's
-    // volume now, less the work it has done since (it pays as it pushes)
+    // The gas's content at the step's start, in the gap's volume now, with
+    // the internal energy E
     const ductNetwork::content& c = content0_[i];
-    const scalar rhoe = (eInt0_[i] - work_[i])/V;
+    const scalar rhoe = E/V;
     if (!mixture_.twoPhase())
     {
         const scalar rho = c.m/V;
@@ -693,6 +707,45 @@ Foam::scalar Foam::crackNetwork::gapPressure
         *K = gas_.kapila() ? gas_.kapilaCoefficient(a, rho1, rho2, p) : 0;
     }
     return p;
+}
+
+
+Foam::scalar Foam::crackNetwork::pathPressure
+(
+    const label i,
+    const scalar alpha,
+    scalar* K
+)
+{
+    // Why not the energy the gas has paid so far (e0 less its work): the
+    // work of a sub-step is measured over the central displacement
+    // (femdemSolid's, half of the sub-step before and half of the one
+    // after), so that energy lags the gap by half a sub-step: too high
+    // while the gap opens, too low while it closes. A vibrating gap then
+    // drains its gas into the solid by (Gamma - 1)/2 (dV/V)^2 p V every
+    // sub-step, a first-order error that made the venting depend on the
+    // sub-step. The trapezoidal rule is symmetric: a gap that closes back
+    // to where it was finds its energy back, and follows the isentrope to
+    // third order in dV/V. What the gas pays stays the work done (endStep)
+    const scalar V = V_[i], dV = V - VLast_[i];
+    const scalar EA = pathE_[i];
+    const scalar pA = gapPressure(i, V, alpha, EA, K);
+    if (dV == 0) return max(pA, scalar(0));
+    // p = pA + b (E - EA): b from a second state (exact for an affine law)
+    const scalar dE = 1e-3*(mag(EA) + mag(p_[i]*dV)) + ROOTVSMALL;
+    const scalar b = (gapPressure(i, V, alpha, EA - dE) - pA)/(-dE);
+    const scalar den = 1 + 0.5*b*dV;
+    scalar E = EA - 0.5*(p_[i] + pA)*dV/max(den, SMALL);
+    scalar p = pA + b*(E - EA);
+    if (!(p > 0) || !(den > SMALL))
+    {
+        // Spent on the way (or a closing step beyond the law's reach):
+        // the gas pushes with at most its last pressure
+        E = EA - 0.5*p_[i]*dV;
+        p = gapPressure(i, V, alpha, E, K);
+    }
+    pathE_[i] = E;
+    return max(p, scalar(0));
 }
 
 
@@ -745,12 +798,11 @@ void Foam::crackNetwork::updateForces
             ),
             V_[i]
         );
-        VLast_[i] = V_[i];
-        const scalar p = gapPressure(i, V_[i], aVNow_[i]/V_[i], &KLast_[i]);
         // Spent gas (p -> 0 on its isentrope) pushes no more; what it did
         // is paid at the step's end, where a state the work left
         // unphysical stops the run (ductNetwork::addEnergy)
-        p_[i] = max(p, scalar(0));
+        p_[i] = pathPressure(i, aVNow_[i]/V_[i], &KLast_[i]);
+        VLast_[i] = V_[i];
         const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
         FixedList<vector2D, 4> fNew(Zero);
         gapForces(jn, x, floored_[i], &openNow_[2*i], p_[i], fNew);
@@ -834,7 +886,7 @@ Foam::scalar Foam::crackNetwork::stableSubStep
             mag((v[jn[2]] - v[jn[0]]) & n), mag((v[jn[3]] - v[jn[1]]) & n)
         );
         const scalar accel = p*L*im;
-        h = min(h, 0.05*gap/max(speed, VSMALL));
+        h = min(h, maxVolumeChange_*gap/max(speed, VSMALL));
         h = min(h, Foam::sqrt(0.1*gap/max(accel, VSMALL)));
     }
     // A void: its corner c moved by delta changes each of the m shares by
@@ -864,7 +916,7 @@ Foam::scalar Foam::crackNetwork::stableSubStep
         {
             h = min(h, 0.5*2/Foam::sqrt(2*stiff*g2im));
         }
-        h = min(h, 0.05*m*Vmin/max(mag(rate), VSMALL));
+        h = min(h, maxVolumeChange_*m*Vmin/max(mag(rate), VSMALL));
     }
     return h;
 }
@@ -1197,7 +1249,7 @@ void Foam::crackNetwork::readState
                     << " aV >= 0, m1 >= 0, to round-off)"
                     << exit(FatalIOError);
             }
-            const scalar p = gapPressure(i, V[i], aV[i]/V[i]);
+            const scalar p = gapPressure(i, V[i], aV[i]/V[i], eInt0_[i]);
             if (!(p > 0) || !std::isfinite(p))
             {
                 FatalIOErrorInFunction(dict)
