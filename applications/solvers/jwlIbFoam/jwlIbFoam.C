@@ -239,6 +239,7 @@ int main(int argc, char *argv[])
             << " rebuilds " << partitionPtr->nRebuilds() << " ("
             << returnReduce(scalar(partitionPtr->rebuildTime()), maxOp<scalar>())
             << " s)" << nl;
+        if (crackGasPtr.valid()) crackGasPtr->reportPartition();
     }
     Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"
         << "  ClockTime = " << runTime.elapsedClockTime() << " s"

@@ -369,8 +369,16 @@ void Foam::femdemSolid::step(const scalar dt)
     const label nc = constrainedNodes_.size();
     label c = 0;
     scalar maxSpeedSqr = 0;
+    // A partitioned solid: halo nodes are not integrated (their owners'
+    // state overwrites theirs after the step)
+    const scalar* owned = nodeShare_.empty() ? nullptr : nodeShare_.cdata();
     for (label i = 0; i < n; ++i)
     {
+        if (owned && owned[i] == 0)
+        {
+            if (c < nc && cn[c] == i) ++c;
+            continue;
+        }
         v[i] += kick*(im[i]*f[i] + g - alpha*v[i]);
         const scalar s2 = magSqr(v[i]);
         // written so that a NaN is taken as the largest

@@ -262,13 +262,24 @@ void Foam::femdemSolid::materialTable::set(const UList<femdemMaterial>& mats)
 
 
 template<class Kernel>
-void Foam::femdemSolid::forEachLawGroup(Kernel& kernel) const
+void Foam::femdemSolid::forEachLawGroup
+(
+    Kernel& kernel,
+    const bool ownedOnly
+) const
 {
+    const bool owned = ownedOnly && ownedLawTriangles_.size();
     for (label l = 0; l < elasticLaw::nLaws; ++l)
     {
         const label* ids = nullptr;
         label n = area0_.size();
-        if (singleLaw_ != l)
+        if (owned)
+        {
+            if (ownedLawTriangles_[l].empty()) continue;
+            ids = ownedLawTriangles_[l].cdata();
+            n = ownedLawTriangles_[l].size();
+        }
+        else if (singleLaw_ != l)
         {
             if (singleLaw_ >= 0 || lawTriangles_[l].empty()) continue;
             ids = lawTriangles_[l].cdata();
@@ -321,7 +332,10 @@ Foam::femdemSolid::stableStep Foam::femdemSolid::addTriangleForces
         triangleMaterial_.cdata(), stepScale_.cdata(), springOmega2_.cdata(),
         mats, fe.data(), fv.data(), stepAccount()
     };
-    forEachLawGroup(kernel);
+    // A partitioned solid's halo triangles push halo nodes only: skipped
+    // (their stable-step data too: every triangle is owned by one rank,
+    // and the step is the largest over the ranks)
+    forEachLawGroup(kernel, true);
     stableStep s;
     kernel.step.result(s.omega2, s.xi2, s.rate2, s.triangle);
     return s;

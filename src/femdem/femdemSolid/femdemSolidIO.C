@@ -152,6 +152,17 @@ void Foam::femdemSolid::setBudgetShare(const UList<bool>& ownedTriangle)
     {
         jointShare_[j] = ownedTriangle[topo_.jointTriangleA()[j]];
     }
+    ownedLawTriangles_.clear();
+    ownedLawTriangles_.setSize(elasticLaw::nLaws);
+    List<DynamicList<label>> owned(elasticLaw::nLaws);
+    forAll(ownedTriangle, t)
+    {
+        if (ownedTriangle[t])
+        {
+            owned[materials_[triangleMaterial_[t]].law].append(t);
+        }
+    }
+    forAll(owned, l) ownedLawTriangles_[l].transfer(owned[l]);
 }
 
 

@@ -29,7 +29,10 @@ Foam::crackGasCoupling::crackGasCoupling
     net_(topology, mixture, dict),
     depth_(depth),
     lostMass_(0),
-    lostEnergy_(0)
+    lostEnergy_(0),
+    maxRun_(0),
+    maxRunOf_(0),
+    maxShared_(0)
 {
     // A misspelt entry would silently take its default
     const wordList valid
@@ -478,7 +481,12 @@ namespace
 {
 using namespace Foam;
 
-//- The network's sub-steps on a partitioned solid through a whole copy
+//- The network's sub-steps on a partitioned solid: each rank runs the
+//  control volumes and voids with a node it owns (crackNetwork::restrictTo)
+//  on the copy of the whole solid, whose nodes it reads from its local
+//  solid, or, for the few it does not own, from their owners (the halo's
+//  work displacement is the local solid's own, not its owner's); the
+//  sub-step is the smallest over the ranks
 class partitionedSubSteps
 :
     public femdemSolid::subStepHook
@@ -486,8 +494,13 @@ class partitionedSubSteps
     crackNetwork::subSteps inner_;
     const femdemPartition& partition_;
     femdemSolid& copy_;
-    const labelList nodes_;
-    const labelList localNode_;
+    //- Read nodes this rank owns: global and local numbers
+    labelList ownGlobal_, ownLocal_;
+    //- Read nodes some rank does not own (the same list on every rank):
+    //  global and local numbers
+    labelList shared_, sharedLocal_;
+    //- Local nodes whose force the network may set: global and local
+    labelList forceGlobal_, forceLocal_;
     List<vector2D> buf_, buf2_;
     bool first_;
 
@@ -504,28 +517,77 @@ public:
         inner_(net, otherForces),
         partition_(partition),
         copy_(copy),
-        nodes_(net.nodes()),
-        localNode_(partition.localNodes(nodes_)),
-        buf_(nodes_.size()),
-        buf2_(2*nodes_.size()),
         first_(true)
-    {}
+    {
+        const labelList& owner = partition.triangleOwner();
+        const label me = Pstream::myProcNo();
+        const labelList read(net.restrictTo(owner, me));
+        const labelList local(partition.localNodes(read));
+        DynamicList<label> og, ol, fg, fl, notMine;
+        forAll(read, i)
+        {
+            if (local[i] >= 0)
+            {
+                fg.append(read[i]);
+                fl.append(local[i]);
+            }
+            if (owner[read[i]/3] == me)
+            {
+                og.append(read[i]);
+                ol.append(local[i]);
+            }
+            else
+            {
+                notMine.append(read[i]);
+            }
+        }
+        ownGlobal_.transfer(og);
+        ownLocal_.transfer(ol);
+        forceGlobal_.transfer(fg);
+        forceLocal_.transfer(fl);
+        // The union over the ranks of what each does not own
+        List<labelList> all(Pstream::nProcs());
+        all[me].transfer(notMine);
+        Pstream::gatherList(all);
+        Pstream::scatterList(all);
+        DynamicList<label> u;
+        for (const labelList& l : all) u.append(l);
+        Foam::sort(u);
+        label m = 0;
+        forAll(u, i)
+        {
+            if (i == 0 || u[i] != u[m - 1]) u[m++] = u[i];
+        }
+        u.setSize(m);
+        shared_.transfer(u);
+        sharedLocal_ = partition.localNodes(shared_);
+        buf_.setSize(shared_.size());
+        buf2_.setSize(2*shared_.size());
+    }
+
+    //- Nodes exchanged every sub-step
+    label nShared() const { return shared_.size(); }
 
     virtual scalar beforeSubStep(femdemSolid& local)
     {
-        // The network's nodes as they are now, the same on every rank
+        // The nodes read, as they are now
         List<vector2D>& x = copy_.xRef();
         List<vector2D>& v = copy_.vRef();
-        partition_.gatherSubset(localNode_, local.x(), local.v(), buf2_);
-        const label n = nodes_.size();
-        forAll(nodes_, i)
+        forAll(ownGlobal_, i)
         {
-            x[nodes_[i]] = buf2_[i];
-            v[nodes_[i]] = buf2_[n + i];
+            x[ownGlobal_[i]] = local.x()[ownLocal_[i]];
+            v[ownGlobal_[i]] = local.v()[ownLocal_[i]];
+        }
+        partition_.gatherSubset(sharedLocal_, local.x(), local.v(), buf2_);
+        const label n = shared_.size();
+        forAll(shared_, i)
+        {
+            x[shared_[i]] = buf2_[i];
+            v[shared_[i]] = buf2_[n + i];
         }
 
         // The forces in the copy (the other forces plus the network's)
-        const scalar h = inner_.beforeSubStep(copy_);
+        const scalar h = returnReduce(inner_.beforeSubStep(copy_), minOp<scalar>());
         const List<vector2D>& F = copy_.externalForce();
         List<vector2D>& f = local.externalForce();
         if (first_)
@@ -540,10 +602,7 @@ public:
         else
         {
             // Only the network's nodes change between sub-steps
-            forAll(nodes_, i)
-            {
-                if (localNode_[i] >= 0) f[localNode_[i]] = F[nodes_[i]];
-            }
+            forAll(forceGlobal_, i) f[forceLocal_[i]] = F[forceGlobal_[i]];
         }
         return h;
     }
@@ -551,8 +610,10 @@ public:
     virtual void afterSubStep(const femdemSolid& local)
     {
         List<vector2D>& d = copy_.workDisplacementRef();
-        partition_.gatherSubset(localNode_, local.workDisplacement(), buf_);
-        forAll(nodes_, i) d[nodes_[i]] = buf_[i];
+        const List<vector2D>& dl = local.workDisplacement();
+        forAll(ownGlobal_, i) d[ownGlobal_[i]] = dl[ownLocal_[i]];
+        partition_.gatherSubset(sharedLocal_, dl, buf_);
+        forAll(shared_, i) d[shared_[i]] = buf_[i];
         inner_.afterSubStep(copy_);
     }
 };
@@ -572,11 +633,34 @@ Foam::label Foam::crackGasCoupling::advanceSolid
     partition.update();
     // The copy's work displacement starts from zero, as the local solid's
     copy.workDisplacementRef() = Zero;
-    partitionedSubSteps hook(net_, otherForces, partition, copy);
-    const label n = partition.advance(dt, hook);
+    label n = 0;
+    {
+        partitionedSubSteps hook(net_, otherForces, partition, copy);
+        if (net_.nRun() > maxRun_)
+        {
+            maxRun_ = net_.nRun();
+            maxRunOf_ = net_.joints().size();
+        }
+        maxShared_ = max(maxShared_, hook.nShared());
+        n = partition.advance(dt, hook);
+    }
     partition.syncCopy(copy);
+    net_.shareWork(partition.triangleOwner());
+    net_.unrestrict();
     net_.endStep(copy.x(), dt);
     return n;
+}
+
+
+void Foam::crackGasCoupling::reportPartition() const
+{
+    // The rank that ran the largest share
+    scalar share = maxRunOf_ > 0 ? scalar(maxRun_)/maxRunOf_ : 0;
+    share = returnReduce(share, maxOp<scalar>());
+    Info<< "Crack gas on the partitioned solid: one rank ran at most "
+        << 100*share << " % of the network's control volumes in its"
+        << " sub-steps; nodes exchanged per sub-step at most " << maxShared_
+        << nl;
 }
 
 

@@ -29,6 +29,24 @@ namespace
 }
 
 
+namespace
+{
+    // The entries of a list, ascending, once each
+    Foam::labelList uniqueSorted(Foam::DynamicList<Foam::label>&& n)
+    {
+        Foam::labelList sorted(std::move(n));
+        Foam::sort(sorted);
+        Foam::label m = 0;
+        forAll(sorted, i)
+        {
+            if (i == 0 || sorted[i] != sorted[m - 1]) sorted[m++] = sorted[i];
+        }
+        sorted.setSize(m);
+        return sorted;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::crackNetwork::crackNetwork
@@ -46,6 +64,7 @@ Foam::crackNetwork::crackNetwork
     ambientRho_(1.2),
     ambientP_(1e5),
     jointCV_(topology.nJoints(), -1),
+    restricted_(false),
     createdMass_(0),
     createdEnergy_(0),
     removedMass_(0),
@@ -407,6 +426,8 @@ void Foam::crackNetwork::setJoints
     DynamicList<std::pair<label, ductNetwork::content>>* released
 )
 {
+    // New control volumes: a restriction no longer applies
+    restricted_ = false;
     // The old network's content and volumes, by joint
     const labelList oldJoints(cvJoint_);
     List<ductNetwork::content> oldContent(oldJoints.size());
@@ -759,7 +780,8 @@ void Foam::crackNetwork::updateForces
     // need the whole volume), then the forces: the gaps' on their faces,
     // the voids' on their corners
     const scalar a = minAperture_;
-    forAll(cvJoint_, i)
+    const labelList& cvs = activeCVs();
+    for (const label i : cvs)
     {
         jointGeometry
         (
@@ -768,16 +790,19 @@ void Foam::crackNetwork::updateForces
         );
         floored_[i] = V_[i] <= 0.5*L_[i]*a*(1 + SMALL);
     }
-    forAll(voidVertex_, k)
+    // (restricted: the areas of the voids at the ends of its control
+    // volumes, added to those only)
+    for (const label k : restricted_ ? areaVoids_ : activeVoids())
     {
         voidArea_[k] = voidArea(k, x, &voidGrad_[voidCornerStart_[k]]);
         const label c0 = voidCVStart_[k], c1 = voidCVStart_[k + 1];
         for (label c = c0; c < c1; ++c)
         {
+            if (restricted_ && !cvActive_[voidCV_[c]]) continue;
             V_[voidCV_[c]] += voidArea_[k]/(c1 - c0);
         }
     }
-    forAll(cvJoint_, i)
+    for (const label i : cvs)
     {
         // The gas pushes where the gap has volume to lose: on the nodes of
         // an end whose opening counts (V = L (o0 + o1)/2 with o = g + a,
@@ -815,7 +840,7 @@ void Foam::crackNetwork::updateForces
     }
     // A void's corners: the mean pressure of the volumes sharing it times
     // its area's gradient (each share pushes with its own pressure)
-    forAll(voidVertex_, k)
+    for (const label k : activeVoids())
     {
         const label c0 = voidCVStart_[k], c1 = voidCVStart_[k + 1];
         scalar P = 0;
@@ -867,7 +892,7 @@ Foam::scalar Foam::crackNetwork::stableSubStep
     // thin gap that opens many times over in one sub-step would be paid at
     // its start pressure), from the faces' speed and acceleration
     scalar h = GREAT;
-    forAll(cvJoint_, i)
+    for (const label i : activeCVs())
     {
         // The gap and its gas as the last updateForces found them
         const scalar V = V_[i], L = L_[i], p = p_[i];
@@ -893,7 +918,7 @@ Foam::scalar Foam::crackNetwork::stableSubStep
     // G_c.delta/m, the pressure of share j by Gamma_j p_j of that over
     // V_j, the force by G_c/m of that; and no share changes by more than
     // 5 % in a sub-step
-    forAll(voidVertex_, k)
+    for (const label k : activeVoids())
     {
         if (!(voidArea_[k] > 0)) continue;
         const label c0 = voidCVStart_[k], c1 = voidCVStart_[k + 1];
@@ -922,6 +947,126 @@ Foam::scalar Foam::crackNetwork::stableSubStep
 }
 
 
+const Foam::labelList& Foam::crackNetwork::activeCVs() const
+{
+    if (restricted_) return subCVs_;
+    if (allCVs_.size() != cvJoint_.size()) allCVs_ = identity(cvJoint_.size());
+    return allCVs_;
+}
+
+
+const Foam::labelList& Foam::crackNetwork::activeVoids() const
+{
+    if (restricted_) return forceVoids_;
+    if (allVoids_.size() != voidVertex_.size())
+    {
+        allVoids_ = identity(voidVertex_.size());
+    }
+    return allVoids_;
+}
+
+
+Foam::labelList Foam::crackNetwork::restrictTo
+(
+    const UList<label>& triangleOwner,
+    const label rank
+)
+{
+    // Triangle of a solid node: 3 nodes per triangle
+    auto mine = [&](const label node) { return triangleOwner[node/3] == rank; };
+    const label nCV = cvJoint_.size(), nV = voidVertex_.size();
+
+    // Control volumes touching an owned node (their forces act on it)
+    cvActive_.setSize(nCV);
+    cvActive_ = false;
+    forAll(cvJoint_, i)
+    {
+        for (const label n : topo_.jointNodes()[cvJoint_[i]])
+        {
+            if (mine(n)) cvActive_[i] = true;
+        }
+    }
+    // Voids pushing an owned corner or paying into such a control volume
+    // (all of whose shares then need their pressure: active too)
+    boolList forceVoid(nV, false);
+    forAll(voidVertex_, k)
+    {
+        for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
+        {
+            if (mine(voidNode_[c])) forceVoid[k] = true;
+        }
+        for (label c = voidCVStart_[k]; c < voidCVStart_[k + 1]; ++c)
+        {
+            if (cvActive_[voidCV_[c]]) forceVoid[k] = true;
+        }
+    }
+    forAll(voidVertex_, k)
+    {
+        if (!forceVoid[k]) continue;
+        for (label c = voidCVStart_[k]; c < voidCVStart_[k + 1]; ++c)
+        {
+            cvActive_[voidCV_[c]] = true;
+        }
+    }
+    // The voids at the ends of the active control volumes: their areas
+    // are part of those volumes
+    boolList areaVoid(forceVoid);
+    forAll(voidVertex_, k)
+    {
+        for (label c = voidCVStart_[k]; c < voidCVStart_[k + 1]; ++c)
+        {
+            if (cvActive_[voidCV_[c]]) areaVoid[k] = true;
+        }
+    }
+    DynamicList<label> cvs, fv, av;
+    forAll(cvActive_, i) if (cvActive_[i]) cvs.append(i);
+    forAll(forceVoid, k) if (forceVoid[k]) fv.append(k);
+    forAll(areaVoid, k) if (areaVoid[k]) av.append(k);
+    subCVs_.transfer(cvs);
+    forceVoids_.transfer(fv);
+    areaVoids_.transfer(av);
+    restricted_ = true;
+
+    // The nodes read: of the active control volumes and the voids' corners
+    DynamicList<label> n(4*subCVs_.size());
+    for (const label i : subCVs_)
+    {
+        for (const label node : topo_.jointNodes()[cvJoint_[i]]) n.append(node);
+    }
+    for (const label k : areaVoids_)
+    {
+        for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
+        {
+            n.append(voidNode_[c]);
+        }
+    }
+    return uniqueSorted(std::move(n));
+}
+
+
+void Foam::crackNetwork::unrestrict()
+{
+    restricted_ = false;
+}
+
+
+void Foam::crackNetwork::shareWork(const UList<label>& triangleOwner)
+{
+    // Each control volume's work from the rank owning its joint's first
+    // triangle (which ran it and every void paying into it): x + 0 = x
+    const label rank = Pstream::myProcNo();
+    scalarList w(work_.size());
+    forAll(cvJoint_, i)
+    {
+        const label n = topo_.jointNodes()[cvJoint_[i]][0];
+        w[i] = triangleOwner[n/3] == rank ? work_[i] : 0;
+    }
+    Pstream::listCombineGather(w, plusEqOp<scalar>());
+    Pstream::listCombineScatter(w);
+    work_ = w;
+}
+
+
 Foam::labelList Foam::crackNetwork::nodes() const
 {
     DynamicList<label> n(4*cvJoint_.size() + voidNode_.size());
@@ -930,21 +1075,13 @@ Foam::labelList Foam::crackNetwork::nodes() const
         for (const label node : topo_.jointNodes()[j]) n.append(node);
     }
     n.append(voidNode_);
-    labelList sorted(std::move(n));
-    Foam::sort(sorted);
-    label m = 0;
-    forAll(sorted, i)
-    {
-        if (i == 0 || sorted[i] != sorted[m - 1]) sorted[m++] = sorted[i];
-    }
-    sorted.setSize(m);
-    return sorted;
+    return uniqueSorted(std::move(n));
 }
 
 
 void Foam::crackNetwork::addWork(const UList<vector2D>& d)
 {
-    forAll(cvJoint_, i)
+    for (const label i : activeCVs())
     {
         const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
         FixedList<vector2D, 4>& last = dLast_[i];
@@ -960,7 +1097,7 @@ void Foam::crackNetwork::addWork(const UList<vector2D>& d)
     }
     // A void's forces (P G_c on its corners, P the mean of its shares'
     // pressures) did P dA, dA = sum G_c.dd_c: each share pays p_j/m dA
-    forAll(voidVertex_, k)
+    for (const label k : activeVoids())
     {
         scalar dA = 0;
         for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)

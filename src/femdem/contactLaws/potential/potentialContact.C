@@ -623,6 +623,13 @@ void Foam::contactLaws::potential::addForces
     const scalar* invM = solid.invMass().cdata();
     const label* mat = solid.triangleMaterial().cdata();
 
+    // A partitioned solid: a pair of two halo triangles pushes only halo
+    // nodes, whose state their owners overwrite after the step (FEMDEM
+    // nodes belong to one triangle each): skipped. A pair with an owned
+    // triangle is computed as in the whole solid, bitwise
+    const scalar* share =
+        solid.nodeShares().empty() ? nullptr : solid.nodeShares().cdata();
+
     // Rows in the order of the lower triangle, partners ascending: the
     // order of the forces does not depend on the build
     targetGeometry ga, gb;
@@ -632,11 +639,13 @@ void Foam::contactLaws::potential::addForces
         label k = pairStart_[a];
         if (k == end) continue;
         const label ta = active_[a];
+        const bool haloA = share && share[3*ta] == 0;
         ga.setBox(x, ta);
         bool gaShape = false;
         for (; k < end; ++k)
         {
             const label tb = partner_[k];
+            if (haloA && share[3*tb] == 0) continue;
             gb.setBox(x, tb);
             if (!ga.overlaps(gb)) continue;
             if (!gaShape)
