@@ -13,7 +13,12 @@
 #   every column within 1e-9 of the input energy of the serial run's, the
 #   budget residual below 1 % of the input (both runs);
 # - the fracture it tests (broken joints, fragments >= 2) and, for the fast
-#   loads, halo rebuilds (parts moving across the partition).
+#   loads, halo rebuilds (parts moving across the partition);
+# - the crushed plate on 3 ranks: at least one load-balancing repartition
+#   (the contact pairs pile up under the platen) with triangles migrating
+#   to another rank, the figures above unchanged by it; the same case
+#   stopped at half time and restarted on 3 ranks continues bitwise with
+#   the owners it wrote (entry triangleOwner of the state).
 # Restarts: a parallel run stopped at half time and restarted on 2 ranks,
 # a serial run continued on 3 ranks and a 2-rank run continued serially all
 # end with x and v byte-identical to the uninterrupted serial run (the
@@ -62,8 +67,8 @@ runCase() {  # dir np  (np 1: serial)
 # Entries x and v of a femdemState, one line each (the node lists)
 nodes() { grep -E '^(x|v) ' "$1"; }
 
-compare() {  # name serialDir parDir np minBroken minRebuilds
-    local name=$1 s=$2 p=$3 np=$4 minBroken=$5 minRebuilds=$6
+compare() {  # name serialDir parDir np minBroken minRebuilds [minRepartitions]
+    local name=$1 s=$2 p=$3 np=$4 minBroken=$5 minRebuilds=$6 minRepart=${7:-0}
     local last; last=$(ls -d "$s"/[0-9]* | sort -t/ -k2 -g | tail -1); last=${last##*/}
     local sameNodes=no
     if [ -f "$p/$last/femdemState" ] && cmp -s <(nodes "$s/$last/femdemState") <(nodes "$p/$last/femdemState"); then sameNodes=yes; fi
@@ -72,6 +77,8 @@ compare() {  # name serialDir parDir np minBroken minRebuilds
     cmp -s "$s/$pp/fragments.dat" "$p/$pp/fragments.dat" && sameFrag=yes
     cmp -s "$s/$pp/crackEvents.dat" "$p/$pp/crackEvents.dat" && sameCracks=yes
     local rebuilds; rebuilds=$(grep -o 'Halo rebuilds [0-9]*' "$p/log.femdemFoam" | awk '{print $3}')
+    local repart migrated
+    read -r repart migrated <<< "$(sed -n 's/^Load-balancing repartitions \([0-9]*\) (\([0-9]*\) triangles migrated).*/\1 \2/p' "$p/log.femdemFoam")"
     local fig
     fig=$(python3 - "$s/$pp" "$p/$pp" <<'PY'
 import sys
@@ -95,7 +102,8 @@ print(f"{len(es)} {len(ep)} {dE:.3e} {res:.3e} {dR:.3e} {int(fs[-1][cf['nBrokenJ
 PY
 )
     read -r ns npar dE res dR broken frags input <<< "$fig"
-    echo ">> $name ($np ranks): t = $last s, broken joints $broken, fragments $frags, halo rebuilds $rebuilds;" \
+    echo ">> $name ($np ranks): t = $last s, broken joints $broken, fragments $frags, halo rebuilds $rebuilds," \
+         "load-balancing repartitions ${repart:-?} (${migrated:-?} triangles migrated);" \
          "x, v identical to serial: $sameNodes; fragments.dat identical: $sameFrag; crackEvents.dat identical: $sameCracks;" \
          "energy columns max |difference| / input $dE (input $input J/m, $ns/$npar rows), residual / input $res, reactions max difference / scale $dR"
     [ "$sameNodes" = yes ] || { echo ">> $name: node positions/velocities differ from serial  <-- FAIL"; fail=1; }
@@ -107,6 +115,8 @@ PY
         || { echo ">> $name: $broken broken joints / $frags fragments, the case needs >= $minBroken and >= 2  <-- FAIL"; fail=1; }
     [ "${rebuilds:-0}" -ge "$minRebuilds" ] \
         || { echo ">> $name: $rebuilds halo rebuilds, fewer than $minRebuilds  <-- FAIL"; fail=1; }
+    [ -n "${repart:-}" ] && [ "$repart" -ge "$minRepart" ] && { [ "$minRepart" = 0 ] || [ "${migrated:-0}" -gt 0 ]; } \
+        || { echo ">> $name: ${repart:-no} load-balancing repartitions (${migrated:-no} triangles migrated), the case needs >= $minRepart  <-- FAIL"; fail=1; }
 }
 
 # 1. Torn apart fast: the right part flies off across the partition, 2 ranks
@@ -118,8 +128,8 @@ runCase pullSerial 1 && runCase pull2 2 && compare pull pullSerial pull2 2 40 1
 # 2. A fast platen crushing the plate, St Venant-Kirchhoff, 3 ranks
 impact='bottom { type fixed; } top { type velocity; value (5 -40); rampTime 2e-6; }'
 makeCase impactSerial 8e-5 "$impact" "top bottom" "elasticLaw StVenantKirchhoff; partition { haloWidth 0.008; }"
-cp -r impactSerial impact3 && cp -r impactSerial impactSerialTo3
-runCase impactSerial 1 && runCase impact3 3 && compare impact impactSerial impact3 3 300 1
+cp -r impactSerial impact3 && cp -r impactSerial impactSerialTo3 && cp -r impactSerial impactSplit3
+runCase impactSerial 1 && runCase impact3 3 && compare impact impactSerial impact3 3 300 1 1
 
 # 3. Restarts
 half=4e-05
@@ -135,6 +145,12 @@ setEnd() { sed -i "s/endTime [^;]*;/endTime $2;/" "$1/system/controlDict"; }
 # 3a. parallel, stopped at half time, restarted on 2 ranks (latestTime)
 setEnd pullSplit $half && runCase pullSplit 2 && setEnd pullSplit 8e-5 && runCase pullSplit 2 \
     && same "restart 2 ranks -> 2 ranks" pullSerial pullSplit
+# 3a'. the crushed plate on 3 ranks, stopped at half time (after its first
+#     repartition), restarted on 3 ranks: the owners come from the state
+setEnd impactSplit3 $half && runCase impactSplit3 3 && setEnd impactSplit3 8e-5 && runCase impactSplit3 3 \
+    && same "restart 3 ranks -> 3 ranks, owners rebalanced ($(grep -o 'Load-balancing repartitions.*' impactSplit3/log.femdemFoam))" impactSerial impactSplit3
+grep -q '^triangleOwner' impactSplit3/$half/femdemState \
+    || { echo ">> impactSplit3: no entry triangleOwner in the state at $half  <-- FAIL"; fail=1; }
 # 3b. 2 ranks, continued serially
 setEnd pullToSerial $half && runCase pullToSerial 2 && setEnd pullToSerial 8e-5 && runCase pullToSerial 1 \
     && same "restart 2 ranks -> serial" pullSerial pullToSerial

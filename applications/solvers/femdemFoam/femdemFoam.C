@@ -542,6 +542,8 @@ int main(int argc, char *argv[])
             << " s)"
             << ", exact displacement checks "
             << partition->nDisplacementChecks() << nl
+            << "Load-balancing repartitions " << partition->nRepartitions()
+            << " (" << partition->nMigrated() << " triangles migrated)" << nl
             << "Per-step exchange (waiting for the other ranks and the"
             << " messages) " << returnReduce(tx, minOp<scalar>()) << " to "
             << returnReduce(tx, maxOp<scalar>()) << " s per rank" << nl

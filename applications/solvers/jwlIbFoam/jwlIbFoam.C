@@ -238,7 +238,9 @@ int main(int argc, char *argv[])
             << returnReduce(tx, maxOp<scalar>()) << " s per rank, halo"
             << " rebuilds " << partitionPtr->nRebuilds() << " ("
             << returnReduce(scalar(partitionPtr->rebuildTime()), maxOp<scalar>())
-            << " s)" << nl;
+            << " s), load-balancing repartitions "
+            << partitionPtr->nRepartitions() << " ("
+            << partitionPtr->nMigrated() << " triangles migrated)" << nl;
         if (crackGasPtr.valid()) crackGasPtr->reportPartition();
     }
     Info<< "ExecutionTime = " << runTime.elapsedCpuTime() << " s"

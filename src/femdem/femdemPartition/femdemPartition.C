@@ -350,16 +350,159 @@ void Foam::femdemPartition::build(const UList<vector2D>& x)
 }
 
 
+void Foam::femdemPartition::readBalance(const dictionary& dict)
+{
+    const dictionary& pd = dict.subOrEmptyDict("partition");
+    balance_ = pd.getOrDefault<bool>("balance", true);
+    maxImbalance_ = pd.getOrDefault<scalar>("maxImbalance", 0.1);
+    pairWeight_ = pd.getOrDefault<scalar>("contactPairWeight", 1);
+    balanceInterval_ = pd.getOrDefault<label>("balanceInterval", 100);
+    auto bad = [&](const word& key, const auto& value, const char* need)
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'partition." << key << "' must be " << need
+            << ", got " << value << exit(FatalIOError);
+    };
+    if (!(maxImbalance_ > 0)) bad("maxImbalance", maxImbalance_, "positive");
+    if (!(pairWeight_ >= 0 && pairWeight_ <= 1000))
+    {
+        bad("contactPairWeight", pairWeight_, "in [0, 1000]");
+    }
+    if (balanceInterval_ < 1) bad("balanceInterval", balanceInterval_, ">= 1");
+}
+
+
+Foam::labelList Foam::femdemPartition::ownedWeights() const
+{
+    labelList count(globalTriangle_.size(), Zero);
+    solid_->contact().addPairCounts(count);
+    forAll(count, t)
+    {
+        count[t] =
+            owned_[t] ? 10 + label(std::round(5*pairWeight_*count[t])) : 0;
+    }
+    return count;
+}
+
+
+Foam::scalar Foam::femdemPartition::imbalance() const
+{
+    const labelList w = ownedWeights();
+    scalar mine = 0;
+    for (const label x : w) mine += x;
+    const scalar most = returnReduce(mine, maxOp<scalar>());
+    const scalar mean = returnReduce(mine, sumOp<scalar>())/Pstream::nProcs();
+    return mean > 0 ? most/mean : 1;
+}
+
+
+void Foam::femdemPartition::checkBalance()
+{
+    if (!balance_ || !Pstream::parRun() || Pstream::nProcs() < 2) return;
+    // The same sub-step count on every rank: every rank checks alike
+    const label block = solid_->timeIndex()/balanceInterval_;
+    if (block == balanceBlock_) return;
+    balanceBlock_ = block;
+    const scalar imb = imbalance();
+    if (imb > 1 + maxImbalance_ && imb > 1.02*balancedImbalance_)
+    {
+        if (debug)
+        {
+            Info<< "femdemPartition: work imbalance " << imb
+                << " at time " << solid_->time() << ": repartition" << endl;
+        }
+        repartition_ = true;
+        rebuild_ = true;
+    }
+}
+
+
+void Foam::femdemPartition::repartition()
+{
+    // The weights in global order on the master
+    const labelList local = ownedWeights();
+    labelList w(nGlobal_, Zero);
+    forAll(local, t)
+    {
+        if (owned_[t]) w[globalTriangle_[t]] = local[t];
+    }
+    Pstream::listCombineGather(w, plusEqOp<label>());
+
+    const label nProcs = Pstream::nProcs();
+    labelList owner;
+    scalar balanced = 1;
+    label moved = 0;
+    if (Pstream::master())
+    {
+        const labelList part = solidMeshRenumber::partition
+        (
+            globalMesh_, nProcs, w
+        );
+        // Parts to ranks by the largest overlap of work first, so that as
+        // little as possible migrates (METIS numbers its parts freely)
+        List<scalar> overlap(nProcs*nProcs, Zero);
+        forAll(part, t) overlap[part[t]*nProcs + owner_[t]] += w[t];
+        labelList rankOf(nProcs, -1);
+        boolList rankTaken(nProcs, false);
+        for (label k = 0; k < nProcs; ++k)
+        {
+            label best = -1;
+            forAll(overlap, i)
+            {
+                if
+                (
+                    rankOf[i/nProcs] < 0 && !rankTaken[i % nProcs]
+                 && (best < 0 || overlap[i] > overlap[best])
+                )
+                {
+                    best = i;
+                }
+            }
+            rankOf[best/nProcs] = best % nProcs;
+            rankTaken[best % nProcs] = true;
+        }
+        owner.setSize(nGlobal_);
+        scalarList sums(nProcs, Zero);
+        forAll(part, t)
+        {
+            owner[t] = rankOf[part[t]];
+            sums[owner[t]] += w[t];
+            moved += owner[t] != owner_[t];
+        }
+        balanced = max(sums)/(sum(sums)/nProcs);
+    }
+    Pstream::scatter(owner);
+    Pstream::scatter(balanced);
+    Pstream::scatter(moved);
+    owner_.transfer(owner);
+    balancedImbalance_ = balanced;
+    ++nRepartitions_;
+    nMigrated_ += moved;
+    repartition_ = false;
+    if (debug)
+    {
+        Info<< "femdemPartition: repartitioned at time " << solid_->time()
+            << ": " << moved << " triangles migrate, imbalance now "
+            << balanced << endl;
+    }
+}
+
+
 void Foam::femdemPartition::rebuild()
 {
     const clockValue t0(clockValue::now());
     // The state, global, from the owners; the accounts stay with the rank
-    // (ownership is static)
+    // (only their sums over the ranks mean anything)
     const List<vector2D> X = gatherNodes(solid_->x());
     const List<vector2D> V = gatherNodes(solid_->v());
     const scalarList damage = gatherJoints(solid_->jointDamage());
     const boolList broken = gatherBroken();
     const scalarList acc = solid_->energyAccounts();
+    // New owners, from the work of the present owners' solids
+    if (repartition_)
+    {
+        repartition();
+    }
     setGlobalState
     (
         X, V, damage, broken, solid_->time(), solid_->timeIndex(),
@@ -467,8 +610,18 @@ Foam::femdemPartition::femdemPartition
     rebuild_(false),
     exchangeTime_(0),
     rebuildTime_(0),
-    trackWork_(false)
+    trackWork_(false),
+    balance_(true),
+    maxImbalance_(0.1),
+    pairWeight_(1),
+    balanceInterval_(100),
+    balanceBlock_(0),
+    balancedImbalance_(1),
+    repartition_(false),
+    nRepartitions_(0),
+    nMigrated_(0)
 {
+    readBalance(dict);
     if (!(haloWidth_ > 0))
     {
         FatalIOErrorInFunction(dict)
@@ -555,10 +708,7 @@ Foam::label Foam::femdemPartition::advance(const scalar interval)
     // The rebuild a past advance() asked for, before this one: between
     // two advances the local solid keeps its last step (the staggered
     // joint energy of the budget needs it)
-    if (rebuild_)
-    {
-        rebuild();
-    }
+    update();
     return solid_->advance(interval);
 }
 
@@ -569,10 +719,7 @@ Foam::label Foam::femdemPartition::advance
     const UList<vector2D>& globalForce
 )
 {
-    if (rebuild_)
-    {
-        rebuild();
-    }
+    update();
     if (globalForce.size() != 3*nGlobal_)
     {
         FatalErrorInFunction
@@ -594,6 +741,7 @@ Foam::label Foam::femdemPartition::advance
 
 void Foam::femdemPartition::update()
 {
+    checkBalance();
     if (rebuild_)
     {
         rebuild();

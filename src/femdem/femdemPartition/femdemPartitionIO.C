@@ -175,6 +175,10 @@ bool Foam::femdemPartition::readState(const fileName& file)
     Pstream::scatter(time);
     Pstream::scatter(timeIndex);
     Pstream::scatter(steps);
+    // A state of a run without balancing entries starts its check blocks
+    // here
+    balanceBlock_ = timeIndex/balanceInterval_;
+    readOwners(file);
     setGlobalState(x, v, damage, broken, time, timeIndex, steps);
 
     takeAccounts(acc, rankAcc);
@@ -244,7 +248,83 @@ void Foam::femdemPartition::appendRankAccounts
         );
         os.precision(17);
         os.writeEntry("rankEnergyAccounts", rankAcc);
+        // The owners and the balancing's schedule: a restart on as many
+        // ranks continues with them (the accounts are theirs)
+        os.writeEntry("triangleOwner", owner_);
+        os.writeEntry
+        (
+            "balanceState",
+            scalarList
+            ({
+                scalar(balanceBlock_), balancedImbalance_,
+                scalar(nRepartitions_), scalar(nMigrated_)
+            })
+        );
     }
+}
+
+
+void Foam::femdemPartition::readOwners(const fileName& file)
+{
+    // Master: the entries of a state written on as many ranks
+    labelList owner;
+    scalarList bal;
+    if (Pstream::master())
+    {
+        IFstream is(file);
+        const dictionary dict(is);
+        List<scalarList> rankAcc;
+        if
+        (
+            dict.readIfPresent("rankEnergyAccounts", rankAcc)
+         && rankAcc.size() == Pstream::nProcs()
+         && dict.readIfPresent("triangleOwner", owner)
+        )
+        {
+            if (owner.size() != nGlobal_)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "entry 'triangleOwner' holds " << owner.size()
+                    << " owners for a solid of " << nGlobal_ << " triangles"
+                    << exit(FatalIOError);
+            }
+            for (const label o : owner)
+            {
+                if (o < 0 || o >= Pstream::nProcs())
+                {
+                    FatalIOErrorInFunction(dict)
+                        << "entry 'triangleOwner': rank " << o
+                        << " outside 0.." << Pstream::nProcs() - 1
+                        << exit(FatalIOError);
+                }
+            }
+            bal = dict.getOrDefault<scalarList>("balanceState", scalarList());
+            if (bal.size() && bal.size() != 4)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "entry 'balanceState' needs 4 values, got "
+                    << bal.size() << exit(FatalIOError);
+            }
+        }
+        else
+        {
+            owner.clear();
+        }
+    }
+    Pstream::scatter(owner);
+    Pstream::scatter(bal);
+    if (owner.size())
+    {
+        owner_.transfer(owner);
+    }
+    if (bal.size() == 4)
+    {
+        balanceBlock_ = label(bal[0]);
+        balancedImbalance_ = bal[1];
+        nRepartitions_ = label(bal[2]);
+        nMigrated_ = label(bal[3]);
+    }
+    repartition_ = false;
 }
 
 
@@ -297,6 +377,8 @@ void Foam::femdemPartition::setStateFrom
             << "a solid of " << whole.nNodes() << " nodes for a partition of "
             << 3*nGlobal_ << exit(FatalError);
     }
+    balanceBlock_ = whole.timeIndex()/balanceInterval_;
+    readOwners(stateFile);
     setGlobalState
     (
         whole.x(), whole.v(), whole.jointDamage(), whole.jointBroken(), whole.time(),

@@ -69,20 +69,23 @@ std::vector<idx_t> metisParts
 (
     const triangleMesh& mesh,
     const label nParts,
-    const bool recursive
+    const bool recursive,
+    const labelUList& weights = labelUList::null()
 )
 {
     std::vector<idx_t> xadj, adjncy;
     triangleGraph(mesh, xadj, adjncy);
     idx_t n = mesh.nTriangles(), np = nParts, nCon = 1, cut = 0;
     std::vector<idx_t> part(n);
+    std::vector<idx_t> vwgt(weights.begin(), weights.end());
     idx_t options[METIS_NOPTIONS];
     METIS_SetDefaultOptions(options);
     options[METIS_OPTION_NUMBERING] = 0;
     const int status =
         (recursive ? METIS_PartGraphRecursive : METIS_PartGraphKway)
         (
-            &n, &nCon, xadj.data(), adjncy.data(), nullptr, nullptr, nullptr,
+            &n, &nCon, xadj.data(), adjncy.data(),
+            vwgt.empty() ? nullptr : vwgt.data(), nullptr, nullptr,
             &np, nullptr, nullptr, options, &cut, part.data()
         );
     if (status != METIS_OK)
@@ -138,10 +141,26 @@ Foam::labelList Foam::solidMeshRenumber::triangleOrder
 Foam::labelList Foam::solidMeshRenumber::partition
 (
     const triangleMesh& mesh,
-    const label nParts
+    const label nParts,
+    const labelUList& weights
 )
 {
     const label n = mesh.nTriangles();
+    if (weights.size() && weights.size() != n)
+    {
+        FatalErrorInFunction
+            << weights.size() << " weights for " << n << " triangles"
+            << exit(FatalError);
+    }
+    for (const label w : weights)
+    {
+        if (w < 1)
+        {
+            FatalErrorInFunction
+                << "triangle weights must be positive, got " << w
+                << exit(FatalError);
+        }
+    }
     if (nParts < 2 || n < 2)
     {
         return labelList(n, Zero);
@@ -152,7 +171,7 @@ Foam::labelList Foam::solidMeshRenumber::partition
             << "cannot split " << n << " triangles into " << nParts
             << " parts" << exit(FatalError);
     }
-    const std::vector<idx_t> part = metisParts(mesh, nParts, false);
+    const std::vector<idx_t> part = metisParts(mesh, nParts, false, weights);
     labelList result(n);
     forAll(result, t)
     {

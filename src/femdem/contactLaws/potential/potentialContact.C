@@ -665,6 +665,21 @@ void Foam::contactLaws::potential::addForces
 }
 
 
+void Foam::contactLaws::potential::addPairCounts(UList<label>& count) const
+{
+    // The list of the last build (none before the first)
+    if (pairStart_.size() != active_.size() + 1) return;
+    for (label a = 0; a < active_.size(); ++a)
+    {
+        for (label i = pairStart_[a]; i < pairStart_[a + 1]; ++i)
+        {
+            ++count[active_[a]];
+            ++count[partner_[i]];
+        }
+    }
+}
+
+
 std::size_t Foam::contactLaws::potential::memoryBytes() const
 {
     return
