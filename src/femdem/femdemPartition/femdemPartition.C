@@ -7,6 +7,7 @@ License
 
 #include "femdemPartition.H"
 #include "solidMeshRenumber.H"
+#include "contactLaw.H"
 #include "Pstream.H"
 #include "PstreamBuffers.H"
 #include "PstreamReduceOps.H"
@@ -357,7 +358,7 @@ void Foam::femdemPartition::readBalance(const dictionary& dict)
     maxImbalance_ = pd.getOrDefault<scalar>("maxImbalance", 0.1);
     pairWeight_ = pd.getOrDefault<scalar>("contactPairWeight", 1);
     balanceInterval_ = pd.getOrDefault<label>("balanceInterval", 100);
-    auto bad = [&](const word& key, const auto& value, const char* need)
+    auto bad = [&](const word& key, const scalar value, const char* need)
     {
         FatalIOErrorInFunction(dict)
             << "entry 'partition." << key << "' must be " << need
@@ -368,7 +369,7 @@ void Foam::femdemPartition::readBalance(const dictionary& dict)
     {
         bad("contactPairWeight", pairWeight_, "in [0, 1000]");
     }
-    if (balanceInterval_ < 1) bad("balanceInterval", balanceInterval_, ">= 1");
+    if (balanceInterval_ < 1) bad("balanceInterval", scalar(balanceInterval_), ">= 1");
 }
 
 
