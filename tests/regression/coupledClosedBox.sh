@@ -85,9 +85,9 @@ cd .. && rm -rf restart && mkdir restart
 cp -r serial/{0,constant,system,0.001} restart/
 (cd restart && jwlIbFoam > log.jwlIbFoam 2>&1) || { echo ">> restart run failed <-- FAIL"; exit 1; }
 d=$(/usr/bin/python3 $compare serial/0.002 restart/0.002 | tail -1 | awk '{print $2}')
-ok=$(/usr/bin/python3 -c "print(int($d <= 1e-12))")
-echo ">> serial restart at 1 ms vs one run, at 2 ms: max relative difference $d (tolerance 1e-12)$([ $ok = 1 ] || echo '  <-- FAIL')"
-[ $ok = 1 ] || fail=1
+ok=$(/usr/bin/python3 -c "print(int(float('$d') <= 1e-12))")
+echo ">> serial restart at 1 ms vs one run, at 2 ms: max relative difference $d (tolerance 1e-12)$([ "$ok" = 1 ] || echo '  <-- FAIL')"
+[ "$ok" = 1 ] || fail=1
 
 # Two ranks to 1 ms (written every 25 steps), reconstructed, against serial
 # at 50 steps (a serial run to 0.1 ms); at 1 ms the gas contents
@@ -105,13 +105,13 @@ if [ ! -f parallel/0.001/uniform/femdemState ]; then
     echo ">> reconstructPar did not bring the solid state <-- FAIL"; fail=1
 else
     d=$(/usr/bin/python3 $compare serial100/0.0001 parallel/0.0001 | tail -1 | awk '{print $2}')
-    ok=$(/usr/bin/python3 -c "print(int($d <= 1e-8))")
-    echo ">> 2 ranks (METIS) vs serial at 0.1 ms (50 steps), reconstructed: max relative difference $d (tolerance 1e-8)$([ $ok = 1 ] || echo '  <-- FAIL')"
-    [ $ok = 1 ] || fail=1
+    ok=$(/usr/bin/python3 -c "print(int(float('$d') <= 1e-8))")
+    echo ">> 2 ranks (METIS) vs serial at 0.1 ms (50 steps), reconstructed: max relative difference $d (tolerance 1e-8)$([ "$ok" = 1 ] || echo '  <-- FAIL')"
+    [ "$ok" = 1 ] || fail=1
     d=$(/usr/bin/python3 $compare serial/0.001 parallel/0.001 | tail -1 | awk '{print $2}')
-    ok=$(/usr/bin/python3 -c "print(int($d <= 1e-8))")
-    echo ">> 2 ranks (METIS) vs serial at 1 ms (500 steps), reconstructed: max relative difference $d (tolerance 1e-8)$([ $ok = 1 ] || echo '  <-- FAIL')"
-    [ $ok = 1 ] || fail=1
+    ok=$(/usr/bin/python3 -c "print(int(float('$d') <= 1e-8))")
+    echo ">> 2 ranks (METIS) vs serial at 1 ms (500 steps), reconstructed: max relative difference $d (tolerance 1e-8)$([ "$ok" = 1 ] || echo '  <-- FAIL')"
+    [ "$ok" = 1 ] || fail=1
 fi
 
 # The replicated solid on 2 ranks to 0.1 ms against serial
@@ -124,9 +124,9 @@ grep -q "Solid replicated" log.jwlIbFoam || { echo ">> replicated: the log does 
 reconstructPar -latestTime > log.reconstructPar 2>&1 || { echo ">> replicated: reconstructPar failed <-- FAIL"; exit 1; }
 cd ..
 d=$(/usr/bin/python3 $compare serial100/0.0001 replicated/0.0001 | tail -1 | awk '{print $2}')
-ok=$(/usr/bin/python3 -c "print(int($d <= 1e-8))")
-echo ">> 2 ranks, replicated solid (partition.partitioned false) vs serial at 0.1 ms (50 steps): max relative difference $d (tolerance 1e-8)$([ $ok = 1 ] || echo '  <-- FAIL')"
-[ $ok = 1 ] || fail=1
+ok=$(/usr/bin/python3 -c "print(int(float('$d') <= 1e-8))")
+echo ">> 2 ranks, replicated solid (partition.partitioned false) vs serial at 0.1 ms (50 steps): max relative difference $d (tolerance 1e-8)$([ "$ok" = 1 ] || echo '  <-- FAIL')"
+[ "$ok" = 1 ] || fail=1
 
 # Two-rank restart from 0.5 ms
 rm -rf parallelRestart && mkdir parallelRestart && cp -r parallel/{0,constant,system} parallelRestart/
@@ -141,6 +141,6 @@ for p in 0 1; do
     worst=$(/usr/bin/python3 -c "print(max($worst, $d))")
 done
 ok=$(/usr/bin/python3 -c "print(int($worst <= 1e-12))")
-echo ">> 2-rank restart at 0.5 ms vs 2-rank run, at 1 ms: max relative difference $worst (tolerance 1e-12)$([ $ok = 1 ] || echo '  <-- FAIL')"
-[ $ok = 1 ] || fail=1
+echo ">> 2-rank restart at 0.5 ms vs 2-rank run, at 1 ms: max relative difference $worst (tolerance 1e-12)$([ "$ok" = 1 ] || echo '  <-- FAIL')"
+[ "$ok" = 1 ] || fail=1
 exit $fail

@@ -139,8 +139,8 @@ cd ..
 fail=0
 for method in scotch metis ptscotch; do
     d=$(/usr/bin/python3 "$data/compareCases.py" serial/8e-06 $method/8e-06 | tail -1 | awk '{print $2}')
-    ok=$(/usr/bin/python3 -c "print(int($d <= 1e-8))")
-    echo ">> coupled box, 2 ranks ($method) vs serial at 8e-6 s: max relative difference $d (tolerance 1e-8)$([ $ok = 1 ] || echo '  <-- FAIL')"
-    [ $ok = 1 ] || fail=1
+    ok=$(/usr/bin/python3 -c "print(int(float('$d') <= 1e-8))")
+    echo ">> coupled box, 2 ranks ($method) vs serial at 8e-6 s: max relative difference $d (tolerance 1e-8)$([ "$ok" = 1 ] || echo '  <-- FAIL')"
+    [ "$ok" = 1 ] || fail=1
 done
 exit $fail

@@ -205,7 +205,9 @@ int main(int argc, char *argv[])
             << seconds << " s, triangle-steps per second "
             << scalar(mesh.nTriangles())*steps/seconds << ", halo rebuilds "
             << part.nRebuilds() << ", broken joints (rank 0's solid) "
-            << part.solid().nBrokenJoints() << endl;
+            << part.solid().nBrokenJoints() << ", load-balancing repartitions "
+            << part.nRepartitions() << " (" << part.nMigrated()
+            << " triangles migrated)" << endl;
         return 0;
     }
     femdemSolid& serial = serialPtr();

@@ -14,9 +14,11 @@ def numbers(path):
     text = open(path).read()
     text = text[text.find("}") + 1:]           # skip FoamFile header
     text = re.sub(r"//.*", "", text)
-    # A partitioned run's per-rank split of the energy accounts (their sums
-    # are the entry energyAccounts): bookkeeping of that rank count
-    text = re.sub(r"rankEnergyAccounts[^;]*;", "", text)
+    # A partitioned run's bookkeeping of its rank count: the per-rank split
+    # of the energy accounts (their sums are the entry energyAccounts), the
+    # triangles' owner ranks and the load-balancing schedule
+    for entry in ("rankEnergyAccounts", "triangleOwner", "balanceState"):
+        text = re.sub(entry + r"\b[^;]*;", "", text)
     toks = re.findall(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", text)
     return np.array([float(t) for t in toks])
 
