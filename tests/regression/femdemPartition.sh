@@ -13,9 +13,12 @@
 # - the fracture it is meant to test (broken joints above a floor) and, for
 #   the fast loads, halo rebuilds (fragments and the pulled part move by
 #   more than a quarter of the halo width).
+# Load balancing: the fast impact on 3 ranks with maxImbalance 0.01 must
+# repartition by the contact work and migrate triangles, still bitwise.
 # Failure paths: a halo too narrow for the motion within one interval stops
-# with a FatalError naming 'partition.haloWidth'; a negative haloWidth is a
-# FatalIOError naming the entry.
+# with a FatalError naming 'partition.haloWidth'; a negative haloWidth and
+# bad balancing entries (maxImbalance, contactPairWeight, balanceInterval)
+# are FatalIOErrors naming the entry.
 cd "$JWLIBFOAM_TEST_DIR" || exit 1
 mkdir -p system
 fail=0
@@ -32,7 +35,8 @@ run() {  # name minBroken minRebuilds ranks args...
     steps=$(echo "$last" | sed -n 's/.*steps \([0-9]*\)$/\1/p')
     local halo
     halo=$(grep -m1 'rank 0:' "log.$name" | sed 's/.*rank 0: //; s/, halo width.*//')
-    echo ">> $name ($np ranks; $*): $steps sub-steps, broken joints $broken, halo rebuilds $rebuilds, max relative difference $rel, differing nodes $nodes; rank 0: $halo"
+    repart=$(grep -o 'load-balancing repartitions [0-9]* ([0-9]* triangles migrated)' "log.$name" | tail -1)
+    echo ">> $name ($np ranks; $*): $steps sub-steps, broken joints $broken, halo rebuilds $rebuilds, $repart, max relative difference $rel, differing nodes $nodes; rank 0: $halo"
     if [ "$rel" != 0 ] || [ "$nodes" != 0 ]; then
         echo ">> $name: partitioned positions differ from serial  <-- FAIL"; fail=1
     fi
@@ -50,6 +54,26 @@ run noContact     600  0 2 -load compression -intervals 20 -contact none
 run impact       1500  4 2 -load impact -intervals 30
 run impactStripes3 1500 4 3 -load impact -intervals 30 -owner stripes -law StVenantKirchhoff
 run pullThinHalo   30 10 2 -load pull -intervals 150 -interval 2e-6 -haloWidth 0.002 -weibull
+
+# Load balancing triggered (the default 0.1 is not reached by this plate)
+run impactBalanced3 1500 4 3 -load impact -intervals 30 -partitionEntries 'maxImbalance 0.01; balanceInterval 20;'
+nRep=$(grep -o 'load-balancing repartitions [0-9]*' log.impactBalanced3 | tail -1 | awk '{print $3}')
+nMig=$(grep -o '([0-9]* triangles migrated)' log.impactBalanced3 | tail -1 | tr -dc 0-9)
+if [ "${nRep:-0}" -lt 1 ] || [ "${nMig:-0}" -lt 1 ]; then
+    echo ">> impactBalanced3: ${nRep:-no} repartitions, ${nMig:-no} triangles migrated; at least one of each expected  <-- FAIL"; fail=1
+fi
+badEntry() {  # entries expected-message
+    mpirun -np 2 femdemPartitionCheck -parallel -load tension -intervals 1 -partitionEntries "$1" > log.badEntry 2>&1
+    local rc=$?
+    if [ $rc -ne 0 ] && [ $rc -lt 128 ] && grep -q "FOAM FATAL IO ERROR" log.badEntry && grep -q "$2" log.badEntry; then
+        echo ">> '$1': FatalIOError naming the entry, exit status $rc"
+    else
+        tail -5 log.badEntry; echo ">> '$1': expected a FatalIOError with \"$2\", exit status $rc  <-- FAIL"; fail=1
+    fi
+}
+badEntry 'maxImbalance -0.1;' "entry 'partition.maxImbalance' must be positive"
+badEntry 'contactPairWeight -1;' "entry 'partition.contactPairWeight' must be in"
+badEntry 'balanceInterval 0;' "entry 'partition.balanceInterval' must be >= 1"
 
 # A halo too narrow for one interval's motion: a clean stop naming the entry
 mpirun -np 2 femdemPartitionCheck -parallel -load pull -intervals 30 -haloWidth 0.0005 > log.narrow 2>&1

@@ -24,7 +24,9 @@ Description
     Options: -load tension|compression|shear|impact|pull, -nx, -ny, -intervals,
     -interval [s], -law neoHookean|StVenantKirchhoff, -contact
     potential|none, -weibull (Weibull joint strengths, m = 6),
-    -owner metis|stripes, -haloWidth [m].
+    -owner metis|stripes, -haloWidth [m], -partitionEntries '<entries>'
+    (more entries of the sub-dictionary partition, e.g. 'maxImbalance
+    0.01;').
 
 \*---------------------------------------------------------------------------*/
 
@@ -47,7 +49,7 @@ std::string properties
     const word& law,
     const word& contact,
     const bool weibull,
-    const string& haloWidth
+    const string& partitionEntries
 )
 {
     std::string bcs;
@@ -97,9 +99,9 @@ std::string properties
                 " seed 77; }";
     }
     text += " } } boundaryConditions { " + bcs + " }";
-    if (!haloWidth.empty())
+    if (!partitionEntries.empty())
     {
-        text += " partition { haloWidth " + haloWidth + "; }";
+        text += " partition { " + partitionEntries + " }";
     }
     return text;
 }
@@ -123,6 +125,11 @@ int main(int argc, char *argv[])
     argList::addBoolOption("weibull", "Weibull joint strengths");
     argList::addOption("owner", "word", "metis | stripes");
     argList::addOption("haloWidth", "scalar", "halo width [m]");
+    argList::addOption
+    (
+        "partitionEntries", "string",
+        "more entries of the partition sub-dictionary"
+    );
     argList::addBoolOption("verbose", "list the first differing nodes");
     argList::addBoolOption
     (
@@ -140,13 +147,16 @@ int main(int argc, char *argv[])
     const word contact = args.getOrDefault<word>("contact", "potential");
     const word ownerKind = args.getOrDefault<word>("owner", "metis");
     const string haloWidth = args.getOrDefault<string>("haloWidth", "");
+    const string partitionEntries =
+        (haloWidth.empty() ? string() : "haloWidth " + haloWidth + "; ")
+      + args.getOrDefault<string>("partitionEntries", "");
 
     const scalar lx = 0.2, ly = 0.1;
     const triangleMesh mesh =
         triangleMesh::rectangle(vector2D::zero, vector2D(lx, ly), nx, ny, "rock");
     IStringStream is
     (
-        properties(load, law, contact, args.found("weibull"), haloWidth)
+        properties(load, law, contact, args.found("weibull"), partitionEntries)
     );
     const dictionary dict(is);
 
@@ -263,7 +273,9 @@ int main(int argc, char *argv[])
         }
     }
     Info<< "halo displacement checks " << part.nDisplacementChecks()
-        << ", halo rebuilds " << part.nRebuilds() << nl
+        << ", halo rebuilds " << part.nRebuilds()
+        << ", load-balancing repartitions " << part.nRepartitions() << " ("
+        << part.nMigrated() << " triangles migrated)" << nl
         << "max relative difference " << worst << ", differing nodes "
         << worstNodes << ", broken joints " << serial.nBrokenJoints()
         << ", steps " << steps << endl;
