@@ -114,6 +114,16 @@ else
     [ "$ok" = 1 ] || fail=1
 fi
 
+# The solid's memory, printed by both runs (issue 15: per rank, what falls
+# with the rank count and what does not yet)
+mem1=$(grep -m1 '^Solid memory:' serial/log.jwlIbFoam)
+mem2=$(grep -m1 '^Solid memory per rank:' parallel/log.jwlIbFoam)
+if [ -n "$mem1" ] && [ -n "$mem2" ]; then
+    echo ">> serial: $mem1; 2 ranks: $mem2"
+else
+    echo ">> jwlIbFoam did not print the solid's memory (serial '$mem1', 2 ranks '$mem2')  <-- FAIL"; fail=1
+fi
+
 # The replicated solid on 2 ranks to 0.1 ms against serial
 rm -rf replicated && mkdir replicated && cp -r serial100/{0,constant,system} replicated/
 cd replicated
