@@ -407,11 +407,10 @@ void Foam::femdemPartition::checkBalance()
     const scalar imb = imbalance();
     if (imb > 1 + maxImbalance_ && imb > 1.02*balancedImbalance_)
     {
-        if (debug)
-        {
-            Info<< "femdemPartition: work imbalance " << imb
-                << " at time " << solid_->time() << ": repartition" << endl;
-        }
+        Info<< "Solid partition: work imbalance " << imb - 1
+            << " (largest rank over the mean - 1, entry partition.maxImbalance "
+            << maxImbalance_ << ") at time " << solid_->time()
+            << ": repartitioned at the next halo rebuild" << endl;
         repartition_ = true;
         rebuild_ = true;
     }
@@ -480,12 +479,9 @@ void Foam::femdemPartition::repartition()
     ++nRepartitions_;
     nMigrated_ += moved;
     repartition_ = false;
-    if (debug)
-    {
-        Info<< "femdemPartition: repartitioned at time " << solid_->time()
-            << ": " << moved << " triangles migrate, imbalance now "
-            << balanced << endl;
-    }
+    Info<< "Solid partition: repartitioned by METIS at time "
+        << solid_->time() << ": " << moved << " triangles migrate, work"
+        << " imbalance now " << balanced - 1 << endl;
 }
 
 
