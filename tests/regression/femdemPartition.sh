@@ -83,11 +83,5 @@ if [ $rc -ne 0 ] && [ $rc -lt 128 ] && grep -q "partition.haloWidth" log.narrow 
 else
     tail -5 log.narrow; echo ">> narrow halo: expected a FatalError naming partition.haloWidth, exit status $rc  <-- FAIL"; fail=1
 fi
-mpirun -np 2 femdemPartitionCheck -parallel -load tension -intervals 1 -haloWidth -1 > log.negative 2>&1
-rc=$?
-if [ $rc -ne 0 ] && [ $rc -lt 128 ] && grep -q "FOAM FATAL IO ERROR" log.negative && grep -q "entry 'partition.haloWidth' must be positive" log.negative; then
-    echo ">> haloWidth -1: FatalIOError naming the entry, exit status $rc"
-else
-    tail -5 log.negative; echo ">> haloWidth -1: expected a FatalIOError naming the entry, exit status $rc  <-- FAIL"; fail=1
-fi
+badEntry 'haloWidth -1;' "entry 'partition.haloWidth' must be positive"
 exit $fail

@@ -177,11 +177,9 @@ int main(int argc, char *argv[])
             << " to " << returnReduce(partition->nOwned(), maxOp<label>())
             << ", halo triangles " << returnReduce(partition->nHalo(), sumOp<label>())
             << " in all" << nl
-            << "Solid memory per rank: local solid "
-            << returnReduce(scalar(partition->localBytes()), maxOp<scalar>())/1e6
-            << " MB (largest rank), copies of the whole mesh and joint"
-            << " topology " << scalar(partition->globalBytes())/1e6 << " MB"
-            << endl;
+            << "Solid memory per rank: ";
+        partition->writeMemory(Info);
+        Info<< endl;
     }
     else
     {

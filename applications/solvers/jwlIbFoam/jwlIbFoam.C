@@ -244,11 +244,9 @@ int main(int argc, char *argv[])
         // What falls with the rank count (the local solid) and what does
         // not yet (the global copies, and the coupling's copy of the whole
         // solid on every rank)
-        Info<< "Solid memory per rank: local solid "
-            << returnReduce(scalar(partitionPtr->localBytes()), maxOp<scalar>())/1e6
-            << " MB (largest rank), copies of the whole mesh and joint"
-            << " topology " << scalar(partitionPtr->globalBytes())/1e6
-            << " MB, the coupling's copy of the whole solid "
+        Info<< "Solid memory per rank: ";
+        partitionPtr->writeMemory(Info);
+        Info<< ", the coupling's copy of the whole solid "
             << scalar(solidPtr->memoryBytes())/1e6 << " MB" << nl;
         if (crackGasPtr.valid()) crackGasPtr->reportPartition();
     }

@@ -826,6 +826,15 @@ void Foam::femdemPartition::trackWorkDisplacement()
 }
 
 
+void Foam::femdemPartition::writeMemory(Ostream& os) const
+{
+    const scalar local = returnReduce(scalar(localBytes()), maxOp<scalar>());
+    os  << "local solid " << local/1e6
+        << " MB (largest rank), copies of the whole mesh and joint topology "
+        << scalar(globalBytes())/1e6 << " MB";
+}
+
+
 std::size_t Foam::femdemPartition::globalBytes() const
 {
     std::size_t b =
