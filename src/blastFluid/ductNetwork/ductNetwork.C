@@ -7,6 +7,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ductNetwork.H"
+#include "PstreamReduceOps.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -81,6 +82,66 @@ void Foam::ductNetwork::setSize(const label nVolumes, const label nInterfaces)
     inMomentum_.setSize(nf, Zero);
     faces_.setSize(nf, mixture_.twoPhase());
     F_.setSize(nf, mixture_.twoPhase());
+    SfA_.setSize(nf);
+    magSfA_.setSize(nf);
+    part_.setWhole(n, nf);
+}
+
+
+void Foam::ductNetwork::primitivesAfterStep()
+{
+    label bad = -1;
+    if (!primitives(bad))
+    {
+        FatalErrorInFunction
+            << "ductNetwork: control volume " << bad << " has no physical"
+            << " state after the step (mass " << m_[bad] << ", pressure "
+            << p_[bad] << ")" << exit(FatalError);
+    }
+}
+
+
+void Foam::ductNetwork::distribute(const labelUList& volumeRank)
+{
+    const geometry& g = geometry_;
+    if (volumeRank.size() != size())
+    {
+        FatalErrorInFunction
+            << "ductNetwork: " << volumeRank.size() << " ranks given for "
+            << size() << " control volumes" << exit(FatalError);
+    }
+    part_.set(volumeRank, g.owner, g.neighbour);
+    volumeRank_ = volumeRank;
+}
+
+
+void Foam::ductNetwork::collect()
+{
+    if (part_.whole()) return;
+    // Per volume its content, stage volume, work and mean pressure from
+    // its owner
+    const label n = size(), nComp = 10;
+    scalarList& buf = collectBuf_;
+    buf.setSize(nComp*n);
+    for (const label i : part_.own())
+    {
+        scalar* b = &buf[nComp*i];
+        b[0] = m_[i]; b[1] = mE_[i]; b[2] = aV_[i]; b[3] = m1_[i];
+        b[4] = mU_[i].x(); b[5] = mU_[i].y(); b[6] = mU_[i].z();
+        b[7] = wallWorkOf_[i]; b[8] = pMean_[i]; b[9] = V_[i];
+    }
+    ductPartition::fromOwners(buf, nComp, volumeRank_);
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar* b = &buf[nComp*i];
+        m_[i] = b[0]; mE_[i] = b[1]; aV_[i] = b[2]; m1_[i] = b[3];
+        mU_[i] = vector(b[4], b[5], b[6]);
+        wallWorkOf_[i] = b[7]; pMean_[i] = b[8]; V_[i] = b[9];
+    }
+    // (the sum in another order than one rank's: round-off)
+    wallWork_ = returnReduce(wallWork_, sumOp<scalar>());
+    part_.setWhole(n, geometry_.owner.size());
+    primitivesAfterStep();
 }
 
 
@@ -116,10 +177,10 @@ void Foam::ductNetwork::setState
 
 bool Foam::ductNetwork::primitives(label& bad)
 {
-    const label n = size();
     const scalar rhoFloor = 1e-12, alphaEps = 1e-12;
+    const labelList& active = part_.active();
     bad = -1;
-    for (label i = 0; i < n; ++i)
+    for (const label i : active)
     {
         const scalar V = V_[i];
         if (!(V > 0) || !(m_[i] > 0) || !std::isfinite(mE_[i]))
@@ -140,15 +201,48 @@ bool Foam::ductNetwork::primitives(label& bad)
         rho1_[i] = max(m1/(max(a, alphaEps)*V), rhoFloor);
         rho2_[i] = max((m_[i] - m1)/(max(1 - a, alphaEps)*V), rhoFloor);
     }
-    if (mixture_.twoPhase())
+    const bool two = mixture_.twoPhase();
+    if (part_.whole())
     {
-        mixture_.pc2(n, alpha_, rho1_, rho2_, rho_, rhoe_, p_, c2_);
+        const label n = size();
+        if (two)
+        {
+            mixture_.pc2(n, alpha_, rho1_, rho2_, rho_, rhoe_, p_, c2_);
+        }
+        else
+        {
+            mixture_.pc2(n, rho_, rho_, rho_, rho_, rhoe_, p_, c2_);
+        }
     }
     else
     {
-        mixture_.pc2(n, rho_, rho_, rho_, rho_, rhoe_, p_, c2_);
+        // The equation of state over the active volumes, packed
+        const label n = active.size();
+        for (scalarField* w : {&wA_, &wR1_, &wR2_, &wR_, &wE_, &wP_, &wC2_})
+        {
+            w->setSize(n);
+        }
+        forAll(active, k)
+        {
+            const label i = active[k];
+            wA_[k] = alpha_[i]; wR1_[k] = rho1_[i]; wR2_[k] = rho2_[i];
+            wR_[k] = rho_[i]; wE_[k] = rhoe_[i];
+        }
+        if (two)
+        {
+            mixture_.pc2(n, wA_, wR1_, wR2_, wR_, wE_, wP_, wC2_);
+        }
+        else
+        {
+            mixture_.pc2(n, wR_, wR_, wR_, wR_, wE_, wP_, wC2_);
+        }
+        forAll(active, k)
+        {
+            p_[active[k]] = wP_[k];
+            c2_[active[k]] = wC2_[k];
+        }
     }
-    for (label i = 0; i < n; ++i)
+    for (const label i : active)
     {
         if (!(p_[i] > 0) || !(c2_[i] > 0) || !std::isfinite(p_[i]))
         {
@@ -261,7 +355,7 @@ Foam::ductNetwork::boundaryState Foam::ductNetwork::inflowState
 }
 
 
-void Foam::ductNetwork::mouthFlux(const label f)
+void Foam::ductNetwork::mouthFlux(const label f, const label k)
 {
     const label P = geometry_.owner[f];
     const scalar A = magSf_[f];
@@ -301,14 +395,14 @@ void Foam::ductNetwork::mouthFlux(const label f)
         scale = cap/(-rhoB*uS*dt_);
     }
     uS *= scale;
-    F_.rho[f] = rhoB*uS;
-    F_.rhoU[f] = rhoB*uS*UB + scale*pB*A*n;
-    F_.rhoE[f] = (rhoEB + pB)*uS;
-    F_.uS[f] = uS;
+    F_.rho[k] = rhoB*uS;
+    F_.rhoU[k] = rhoB*uS*UB + scale*pB*A*n;
+    F_.rhoE[k] = (rhoEB + pB)*uS;
+    F_.uS[k] = uS;
     if (mixture_.twoPhase())
     {
-        F_.rhoY1[f] = F_.rho[f]*Y1B;
-        F_.alpha[f] = uS*alphaB;
+        F_.rhoY1[k] = F_.rho[k]*Y1B;
+        F_.alpha[k] = uS*alphaB;
     }
 }
 
@@ -336,27 +430,40 @@ void Foam::ductNetwork::fluxes()
             (*Y1)[f] = alpha_[i]*rho1_[i]/rho_[i];
         }
     };
-    forAll(g.owner, f)
+    // The interfaces this rank computes, packed (k-th: interface faces[k])
+    const labelList& faces = part_.faces();
+    const bool whole = part_.whole();
+    forAll(faces, k)
     {
+        const label f = faces[k];
         const label P = g.owner[f], N = g.neighbour[f];
         side
         (
             P, s.rhoL, s.UL, s.pL, s.cL, s.EL,
-            twoPhase ? &s.alphaL : nullptr, &s.Y1L, f
+            twoPhase ? &s.alphaL : nullptr, &s.Y1L, k
         );
         // A mouth's second side is a copy: its flux is replaced below
         side
         (
             N >= 0 ? N : P, s.rhoR, s.UR, s.pR, s.cR, s.ER,
-            twoPhase ? &s.alphaR : nullptr, &s.Y1R, f
+            twoPhase ? &s.alphaR : nullptr, &s.Y1R, k
         );
-    }
-    flux_->fluxes(0, g.owner.size(), g.Sf, magSf_, s, twoPhase, F_);
-    forAll(g.owner, f)
-    {
-        if (g.neighbour[f] < 0)
+        if (!whole)
         {
-            mouthFlux(f);
+            SfA_[k] = g.Sf[f];
+            magSfA_[k] = magSf_[f];
+        }
+    }
+    flux_->fluxes
+    (
+        0, faces.size(), whole ? g.Sf : SfA_, whole ? magSf_ : magSfA_, s,
+        twoPhase, F_
+    );
+    forAll(faces, k)
+    {
+        if (g.neighbour[faces[k]] < 0)
+        {
+            mouthFlux(faces[k], k);
         }
     }
 }
@@ -379,41 +486,44 @@ void Foam::ductNetwork::stage(const scalar a, const scalar b, const scalar dt)
     const bool twoPhase = mixture_.twoPhase();
     Rm_ = 0; RmU_ = Zero; RmE_ = 0; RaV_ = 0; Rm1_ = 0;
     dilatation_ = dVdt_;
-    forAll(g.owner, f)
+    // (a ghost's residual gets only part of its fluxes: never used)
+    const labelList& faces = part_.faces();
+    forAll(faces, k)
     {
+        const label f = faces[k];
         const label P = g.owner[f], N = g.neighbour[f];
-        inMass_[f] -= b*dt*F_.rho[f];
-        inMomentum_[f] -= b*dt*F_.rhoU[f];
-        inEnergy_[f] -= b*dt*F_.rhoE[f];
+        inMass_[f] -= b*dt*F_.rho[k];
+        inMomentum_[f] -= b*dt*F_.rhoU[k];
+        inEnergy_[f] -= b*dt*F_.rhoE[k];
         if (twoPhase)
         {
-            inMass1_[f] -= b*dt*F_.rhoY1[f];
-            inAlpha_[f] -= b*dt*F_.alpha[f];
+            inMass1_[f] -= b*dt*F_.rhoY1[k];
+            inAlpha_[f] -= b*dt*F_.alpha[k];
         }
-        Rm_[P] -= F_.rho[f];
-        RmU_[P] -= F_.rhoU[f];
-        RmE_[P] -= F_.rhoE[f];
+        Rm_[P] -= F_.rho[k];
+        RmU_[P] -= F_.rhoU[k];
+        RmE_[P] -= F_.rhoE[k];
         if (N >= 0)
         {
-            Rm_[N] += F_.rho[f];
-            RmU_[N] += F_.rhoU[f];
-            RmE_[N] += F_.rhoE[f];
+            Rm_[N] += F_.rho[k];
+            RmU_[N] += F_.rhoU[k];
+            RmE_[N] += F_.rhoE[k];
         }
         if (twoPhase)
         {
-            Rm1_[P] -= F_.rhoY1[f];
-            RaV_[P] -= F_.alpha[f] - alpha_[P]*F_.uS[f];
-            dilatation_[P] += F_.uS[f];
+            Rm1_[P] -= F_.rhoY1[k];
+            RaV_[P] -= F_.alpha[k] - alpha_[P]*F_.uS[k];
+            dilatation_[P] += F_.uS[k];
             if (N >= 0)
             {
-                Rm1_[N] += F_.rhoY1[f];
-                RaV_[N] += F_.alpha[f] - alpha_[N]*F_.uS[f];
-                dilatation_[N] -= F_.uS[f];
+                Rm1_[N] += F_.rhoY1[k];
+                RaV_[N] += F_.alpha[k] - alpha_[N]*F_.uS[k];
+                dilatation_[N] -= F_.uS[k];
             }
         }
     }
 
-    forAll(m_, i)
+    for (const label i : part_.own())
     {
         // Walls: their pressure on the gas (W outward), the gas's work on
         // their motion
@@ -452,6 +562,17 @@ void Foam::ductNetwork::stage(const scalar a, const scalar b, const scalar dt)
         {
             mU_[i] = ((mU_[i] & g.axis[i])/ax2)*g.axis[i];
         }
+    }
+
+    // Distributed: the ghosts' volumes (the same bits as their owners')
+    // and contents from their owners
+    if (!part_.whole())
+    {
+        for (const label i : part_.ghosts())
+        {
+            V_[i] = a*g.V0[i] + (1 - a)*(V_[i] + dt*dVdt_[i]);
+        }
+        part_.exchange({&m_, &mE_, &aV_, &m1_}, {&mU_});
     }
 }
 
@@ -499,42 +620,45 @@ void Foam::ductNetwork::advance(const scalar dt)
     {
         stage(rk_.a(s), rk_.resultWeight(s), dt);
     }
-    label bad = -1;
-    if (!primitives(bad))
-    {
-        FatalErrorInFunction
-            << "ductNetwork: control volume " << bad << " has no physical"
-            << " state after the step (mass " << m_[bad] << ", pressure "
-            << p_[bad] << ")" << exit(FatalError);
-    }
+    primitivesAfterStep();
 }
 
 
 Foam::scalar Foam::ductNetwork::maxDeltaT(const scalar Co) const
 {
     const geometry& g = geometry_;
+    const label me = Pstream::myProcNo();
+    const bool whole = part_.whole();
+    auto mine = [&](const label i)
+    {
+        return i >= 0 && (whole || volumeRank_[i] == me);
+    };
     waveSum_ = 0;
-    forAll(g.owner, f)
+    for (const label f : part_.faces())
     {
         const scalar A = mag(g.Sf[f]);
         if (A <= 0) continue;
         const vector n = g.Sf[f]/A;
         const label P = g.owner[f], N = g.neighbour[f];
-        waveSum_[P] += (mag(U_[P] & n) + c_[P])*A;
-        if (N >= 0)
+        if (mine(P))
+        {
+            waveSum_[P] += (mag(U_[P] & n) + c_[P])*A;
+        }
+        if (mine(N))
         {
             waveSum_[N] += (mag(U_[N] & n) + c_[N])*A;
         }
     }
     scalar dt = GREAT;
-    forAll(waveSum_, i)
+    for (const label i : part_.own())
     {
         if (waveSum_[i] > 0)
         {
             dt = min(dt, Co*min(g.V0[i], g.V1[i])/waveSum_[i]);
         }
     }
-    return dt;
+    // Distributed: the smallest over the ranks, the serial one
+    return whole ? dt : returnReduce(dt, minOp<scalar>());
 }
 
 

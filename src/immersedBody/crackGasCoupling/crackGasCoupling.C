@@ -647,6 +647,7 @@ Foam::label Foam::crackGasCoupling::advanceSolid
     partition.syncCopy(copy);
     net_.shareWork(partition.triangleOwner());
     net_.unrestrict();
+    net_.distributeGas(partition.triangleOwner());
     net_.endStep(copy.x(), dt);
     return n;
 }

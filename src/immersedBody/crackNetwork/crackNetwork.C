@@ -1050,6 +1050,18 @@ void Foam::crackNetwork::unrestrict()
 }
 
 
+void Foam::crackNetwork::distributeGas(const UList<label>& triangleOwner)
+{
+    // Each control volume on the rank owning its joint's first triangle
+    // (the owner of its work, shareWork)
+    gasRank_.setSize(cvJoint_.size());
+    forAll(cvJoint_, i)
+    {
+        gasRank_[i] = triangleOwner[topo_.jointNodes()[cvJoint_[i]][0]/3];
+    }
+}
+
+
 void Foam::crackNetwork::shareWork(const UList<label>& triangleOwner)
 {
     // Each control volume's work from the rank owning its joint's first
@@ -1185,6 +1197,11 @@ Foam::scalar Foam::crackNetwork::endStep
     // at the step's start let a gap squeezed to its floor with gas rushing
     // in take sub-steps its later state could not: benchBlast stopped at
     // 0.27 ms with a control volume at negative pressure
+    // On a partitioned solid the ranks share the gas step (distributeGas)
+    if (gasRank_.size())
+    {
+        gas_.distribute(gasRank_);
+    }
     scalar t = 0;
     label n = 0;
     while (t < dt*(1 - 1e-12))
@@ -1234,6 +1251,33 @@ Foam::scalar Foam::crackNetwork::endStep
         }
     }
     gas_.plenum().maxMass = maxMass0;
+    if (gas_.distributed())
+    {
+        // The whole network and every mouth's inflow on every rank (the
+        // mouths' sums held by the rank of their control volume)
+        gas_.collect();
+        scalarList& q = mouthBuf_;
+        q.setSize(6*nm);
+        labelList& rank = mouthRank_;
+        rank.setSize(nm);
+        forAll(mouths_, m)
+        {
+            rank[m] = gasRank_[mouths_[m][0]];
+            q[6*m] = mouthMass_[m];
+            q[6*m + 1] = mouthMass1_[m];
+            q[6*m + 2] = mouthEnergy_[m];
+            for (label d = 0; d < 3; ++d) q[6*m + 3 + d] = mouthMomentum_[m][d];
+        }
+        ductPartition::fromOwners(q, 6, rank);
+        forAll(mouths_, m)
+        {
+            mouthMass_[m] = q[6*m];
+            mouthMass1_[m] = q[6*m + 1];
+            mouthEnergy_[m] = q[6*m + 2];
+            mouthMomentum_[m] = vector(q[6*m + 3], q[6*m + 4], q[6*m + 5]);
+        }
+    }
+    gasRank_.clear();
     nGasSubSteps_ = n;
     return sum(work_);
 }

@@ -723,18 +723,59 @@ void Foam::immersedBodyCoupling::wallForces
     }
     nodeForces.setSize(nNodes_);
     nodeForces = Zero;
+    if (!Pstream::parRun())
+    {
+        forEachWallForce
+        (
+            [&](const label, const label n, const vector2D& f)
+            {
+                nodeForces[n] += f;
+            }
+        );
+        return;
+    }
+
+    // The same solid on every rank: each rank's cells push a few nodes
+    // (their walls), whose forces every rank adds in rank order (the
+    // message O(the nodes at this rank's walls), not O(the solid))
+    pushed_.setSize(nNodes_, false);
+    pushedNodes_.clear();
     forEachWallForce
     (
         [&](const label, const label n, const vector2D& f)
         {
+            if (!pushed_[n])
+            {
+                pushed_[n] = true;
+                pushedNodes_.append(n);
+            }
             nodeForces[n] += f;
         }
     );
-    if (Pstream::parRun())
+    const label me = Pstream::myProcNo();
+    List<scalarList> all(Pstream::nProcs());
+    scalarList& mine = all[me];
+    mine.setSize(3*pushedNodes_.size());
+    forAll(pushedNodes_, k)
     {
-        // The same solid on every processor: sum the parts
-        Pstream::listCombineGather(nodeForces, plusEqOp<vector2D>());
-        Pstream::listCombineScatter(nodeForces);
+        const label n = pushedNodes_[k];
+        // (a node number is exact in a double)
+        mine[3*k] = n;
+        mine[3*k + 1] = nodeForces[n].x();
+        mine[3*k + 2] = nodeForces[n].y();
+        pushed_[n] = false;
+        nodeForces[n] = Zero;
+    }
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+    for (const scalarList& from : all)
+    {
+        for (label k = 0; 3*k < from.size(); ++k)
+        {
+            vector2D& F = nodeForces[label(from[3*k])];
+            F.x() += from[3*k + 1];
+            F.y() += from[3*k + 2];
+        }
     }
 }
 
