@@ -566,11 +566,11 @@ Foam::scalar Foam::femdemPartition::makeStepGlobal(femdemSolid& solid)
     // largest over the ranks, all in one gather and scatter (one message
     // each way per tree level, not one reduction per value). A NaN (a
     // diverging solid) wins, so that every rank stops
-    const FixedList<scalar, 5> mine = stepData(solid);
+    const FixedList<scalar, 6> mine = stepData(solid);
     List<scalar> d(mine.begin(), mine.end());
     Pstream::listCombineGather(d, maxOrNaNEqOp());
     Pstream::listCombineScatter(d);
-    FixedList<scalar, 5> all;
+    FixedList<scalar, 6> all;
     forAll(all, i) all[i] = d[i];
     setStepData(solid, all);
     return all[3];
@@ -936,6 +936,12 @@ void Foam::femdemPartition::afterStep(femdemSolid& solid)
 {
     List<vector2D>& x = solid.xRef();
     List<vector2D>& v = solid.vRef();
+    // With the work displacement tracked, the halo's too: computed here
+    // from the local (incomplete) forces, the owners' is the one the crack
+    // gas and the coupling pay with
+    List<vector2D>& d = solid.workDisplacementRef();
+    const bool withD = d.size() > 0;
+    const label perNode = withD ? 3 : 2;
 
     const clockValue t0(clockValue::now());
 
@@ -943,6 +949,7 @@ void Foam::femdemPartition::afterStep(femdemSolid& solid)
     const label start = UPstream::nRequests();
     forAll(procs_, i)
     {
+        recvBuf_[i].setSize(3*perNode*recvTriangles_[i].size());
         if (recvBuf_[i].size())
         {
             UIPstream::read
@@ -955,6 +962,7 @@ void Foam::femdemPartition::afterStep(femdemSolid& solid)
     }
     forAll(procs_, i)
     {
+        sendBuf_[i].setSize(3*perNode*sendTriangles_[i].size());
         if (sendBuf_[i].empty()) continue;
         vector2D* buf = sendBuf_[i].data();
         for (const label t : sendTriangles_[i])
@@ -963,6 +971,7 @@ void Foam::femdemPartition::afterStep(femdemSolid& solid)
             {
                 *buf++ = x[3*t + k];
                 *buf++ = v[3*t + k];
+                if (withD) *buf++ = d[3*t + k];
             }
         }
         UOPstream::write
@@ -982,6 +991,7 @@ void Foam::femdemPartition::afterStep(femdemSolid& solid)
             {
                 x[3*t + k] = *buf++;
                 v[3*t + k] = *buf++;
+                if (withD) d[3*t + k] = *buf++;
             }
         }
     }

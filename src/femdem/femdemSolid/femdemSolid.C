@@ -451,6 +451,36 @@ void Foam::femdemSolid::step(const scalar dt)
 }
 
 
+Foam::FixedList<Foam::scalar, 6>
+Foam::femdemSolid::haloExchange::stepData(const femdemSolid& s)
+{
+    FixedList<scalar, 6> d;
+    d[0] = s.stepOmega2_;
+    d[1] = s.stepXi2_;
+    d[2] = s.stepRate2_;
+    d[3] = s.maxSpeedSqr_;
+    d[4] = s.damageSeen_;
+    d[5] = s.contact_->listExpired(s);
+    return d;
+}
+
+
+void Foam::femdemSolid::haloExchange::setStepData
+(
+    femdemSolid& s,
+    const FixedList<scalar, 6>& d
+)
+{
+    s.stepOmega2_ = d[0];
+    s.stepXi2_ = d[1];
+    s.stepRate2_ = d[2];
+    s.maxSpeedSqr_ = d[3];
+    s.damageSeen_ = d[4] > 0;
+    s.contact_->setListExpired(d[5] > 0);
+    s.setStableTimeStep();
+}
+
+
 void Foam::femdemSolid::trackWorkDisplacement()
 {
     if (!trackEnergy_)

@@ -484,9 +484,11 @@ using namespace Foam;
 //- The network's sub-steps on a partitioned solid: each rank runs the
 //  control volumes and voids with a node it owns (crackNetwork::restrictTo)
 //  on the copy of the whole solid, whose nodes it reads from its local
-//  solid, or, for the few it does not own, from their owners (the halo's
-//  work displacement is the local solid's own, not its owner's); the
-//  sub-step is the smallest over the ranks
+//  solid (owned, or halo: the halo exchange after every step brings their
+//  positions, velocities and work displacements from their owners), or,
+//  if some rank reads a node outside its halo, those it does not own from
+//  their owners (two gathers per sub-step); the sub-step is the smallest
+//  over the ranks
 class partitionedSubSteps
 :
     public femdemSolid::subStepHook
@@ -494,7 +496,8 @@ class partitionedSubSteps
     crackNetwork::subSteps inner_;
     const femdemPartition& partition_;
     femdemSolid& copy_;
-    //- Read nodes this rank owns: global and local numbers
+    //- Read nodes this rank takes from its local solid: global and local
+    //  numbers
     labelList ownGlobal_, ownLocal_;
     //- Read nodes some rank does not own (the same list on every rank):
     //  global and local numbers
@@ -523,6 +526,11 @@ public:
         const label me = Pstream::myProcNo();
         const labelList read(net.restrictTo(owner, me));
         const labelList local(partition.localNodes(read));
+        // Every read node in the reader's halo (the usual case: the
+        // network's nodes are vertex neighbours of an owned triangle)
+        bool allLocal = true;
+        for (const label l : local) allLocal = allLocal && l >= 0;
+        reduce(allLocal, andOp<bool>());
         DynamicList<label> og, ol, fg, fl, notMine;
         forAll(read, i)
         {
@@ -531,7 +539,7 @@ public:
                 fg.append(read[i]);
                 fl.append(local[i]);
             }
-            if (owner[read[i]/3] == me)
+            if (allLocal || owner[read[i]/3] == me)
             {
                 og.append(read[i]);
                 ol.append(local[i]);
@@ -578,12 +586,16 @@ public:
             x[ownGlobal_[i]] = local.x()[ownLocal_[i]];
             v[ownGlobal_[i]] = local.v()[ownLocal_[i]];
         }
-        partition_.gatherSubset(sharedLocal_, local.x(), local.v(), buf2_);
-        const label n = shared_.size();
-        forAll(shared_, i)
+        // (shared_ is the same list on every rank: all or none gather)
+        if (shared_.size())
         {
-            x[shared_[i]] = buf2_[i];
-            v[shared_[i]] = buf2_[n + i];
+            partition_.gatherSubset(sharedLocal_, local.x(), local.v(), buf2_);
+            const label n = shared_.size();
+            forAll(shared_, i)
+            {
+                x[shared_[i]] = buf2_[i];
+                v[shared_[i]] = buf2_[n + i];
+            }
         }
 
         // The forces in the copy (the other forces plus the network's)
@@ -612,8 +624,11 @@ public:
         List<vector2D>& d = copy_.workDisplacementRef();
         const List<vector2D>& dl = local.workDisplacement();
         forAll(ownGlobal_, i) d[ownGlobal_[i]] = dl[ownLocal_[i]];
-        partition_.gatherSubset(sharedLocal_, dl, buf_);
-        forAll(shared_, i) d[shared_[i]] = buf_[i];
+        if (shared_.size())
+        {
+            partition_.gatherSubset(sharedLocal_, dl, buf_);
+            forAll(shared_, i) d[shared_[i]] = buf_[i];
+        }
         inner_.afterSubStep(copy_);
     }
 };

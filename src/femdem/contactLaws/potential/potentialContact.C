@@ -120,6 +120,7 @@ Foam::contactLaws::potential::potential(const dictionary& dict)
 :
     contactLaw(dict),
     activeChanges_(-1),
+    expired_(-1),
     nCandidates_(0),
     nActive_(0),
     frictionFactor_
@@ -600,6 +601,21 @@ bool Foam::contactLaws::potential::contactorTarget
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+bool Foam::contactLaws::potential::listExpired
+(
+    const femdemSolid& solid
+) const
+{
+    return grown_.size() == active_.size() && !listValid(solid);
+}
+
+
+void Foam::contactLaws::potential::setListExpired(const bool expired)
+{
+    expired_ = expired;
+}
+
+
 void Foam::contactLaws::potential::addForces
 (
     const femdemSolid& solid,
@@ -617,7 +633,13 @@ void Foam::contactLaws::potential::addForces
     nActive_ = 0;
     const label nA = active_.size();
     if (nA < 2) return;
-    if (rebuild || !listValid(solid)) buildList(solid);
+    // (a decision of setListExpired holds for this call only)
+    const label decided = expired_;
+    expired_ = -1;
+    if (rebuild || decided == 1 || (decided < 0 && !listValid(solid)))
+    {
+        buildList(solid);
+    }
 
     const vector2D* x = solid.x().cdata();
     const scalar* invM = solid.invMass().cdata();
