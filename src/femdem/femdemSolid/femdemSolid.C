@@ -481,6 +481,12 @@ void Foam::femdemSolid::haloExchange::setStepData
 }
 
 
+void Foam::femdemSolid::holdWorkDisplacement()
+{
+    workDisplacement_.setSize(x_.size(), Zero);
+}
+
+
 void Foam::femdemSolid::trackWorkDisplacement()
 {
     if (!trackEnergy_)
