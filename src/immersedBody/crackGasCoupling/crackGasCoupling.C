@@ -12,6 +12,14 @@ License
 #include "IFstream.H"
 #include "OFstream.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(crackGasCoupling, 0);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::crackGasCoupling::crackGasCoupling
@@ -528,7 +536,7 @@ public:
         const labelList local(partition.localNodes(read));
         // Every read node in the reader's halo (the usual case: the
         // network's nodes are vertex neighbours of an owned triangle)
-        bool allLocal = true;
+        bool allLocal = !(crackGasCoupling::debug & 1);
         for (const label l : local) allLocal = allLocal && l >= 0;
         reduce(allLocal, andOp<bool>());
         DynamicList<label> og, ol, fg, fl, notMine;
