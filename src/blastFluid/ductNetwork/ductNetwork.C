@@ -201,18 +201,20 @@ bool Foam::ductNetwork::primitives(label& bad)
         rho1_[i] = max(m1/(max(a, alphaEps)*V), rhoFloor);
         rho2_[i] = max((m_[i] - m1)/(max(1 - a, alphaEps)*V), rhoFloor);
     }
-    const bool two = mixture_.twoPhase();
+    // One material: its density in every slot
+    auto pc2 = [&]
+    (
+        const label n, const scalarField& a, const scalarField& r1,
+        const scalarField& r2, const scalarField& r, const scalarField& e,
+        scalarField& p, scalarField& c2
+    )
+    {
+        if (mixture_.twoPhase()) mixture_.pc2(n, a, r1, r2, r, e, p, c2);
+        else mixture_.pc2(n, r, r, r, r, e, p, c2);
+    };
     if (part_.whole())
     {
-        const label n = size();
-        if (two)
-        {
-            mixture_.pc2(n, alpha_, rho1_, rho2_, rho_, rhoe_, p_, c2_);
-        }
-        else
-        {
-            mixture_.pc2(n, rho_, rho_, rho_, rho_, rhoe_, p_, c2_);
-        }
+        pc2(size(), alpha_, rho1_, rho2_, rho_, rhoe_, p_, c2_);
     }
     else
     {
@@ -228,14 +230,7 @@ bool Foam::ductNetwork::primitives(label& bad)
             wA_[k] = alpha_[i]; wR1_[k] = rho1_[i]; wR2_[k] = rho2_[i];
             wR_[k] = rho_[i]; wE_[k] = rhoe_[i];
         }
-        if (two)
-        {
-            mixture_.pc2(n, wA_, wR1_, wR2_, wR_, wE_, wP_, wC2_);
-        }
-        else
-        {
-            mixture_.pc2(n, wR_, wR_, wR_, wR_, wE_, wP_, wC2_);
-        }
+        pc2(n, wA_, wR1_, wR2_, wR_, wE_, wP_, wC2_);
         forAll(active, k)
         {
             p_[active[k]] = wP_[k];
@@ -448,11 +443,6 @@ void Foam::ductNetwork::fluxes()
             N >= 0 ? N : P, s.rhoR, s.UR, s.pR, s.cR, s.ER,
             twoPhase ? &s.alphaR : nullptr, &s.Y1R, k
         );
-        if (!whole)
-        {
-            SfA_[k] = g.Sf[f];
-            magSfA_[k] = magSf_[f];
-        }
     }
     flux_->fluxes
     (
@@ -601,6 +591,17 @@ void Foam::ductNetwork::advance(const scalar dt)
             W_[g.neighbour[f]] += g.Sf[f];
         }
     }
+    // Distributed: the computed interfaces' areas packed for the flux
+    // scheme (fluxes), once for the step's stages
+    if (!part_.whole())
+    {
+        const labelList& faces = part_.faces();
+        forAll(faces, k)
+        {
+            SfA_[k] = g.Sf[faces[k]];
+            magSfA_[k] = magSf_[faces[k]];
+        }
+    }
     dt_ = dt;
     forAll(dVdt_, i)
     {
@@ -627,12 +628,8 @@ void Foam::ductNetwork::advance(const scalar dt)
 Foam::scalar Foam::ductNetwork::maxDeltaT(const scalar Co) const
 {
     const geometry& g = geometry_;
-    const label me = Pstream::myProcNo();
-    const bool whole = part_.whole();
-    auto mine = [&](const label i)
-    {
-        return i >= 0 && (whole || volumeRank_[i] == me);
-    };
+    // (distributed: the interfaces with an own end, all an own volume
+    // has; a ghost's sum is partial and not used)
     waveSum_ = 0;
     for (const label f : part_.faces())
     {
@@ -640,11 +637,8 @@ Foam::scalar Foam::ductNetwork::maxDeltaT(const scalar Co) const
         if (A <= 0) continue;
         const vector n = g.Sf[f]/A;
         const label P = g.owner[f], N = g.neighbour[f];
-        if (mine(P))
-        {
-            waveSum_[P] += (mag(U_[P] & n) + c_[P])*A;
-        }
-        if (mine(N))
+        waveSum_[P] += (mag(U_[P] & n) + c_[P])*A;
+        if (N >= 0)
         {
             waveSum_[N] += (mag(U_[N] & n) + c_[N])*A;
         }
@@ -658,7 +652,7 @@ Foam::scalar Foam::ductNetwork::maxDeltaT(const scalar Co) const
         }
     }
     // Distributed: the smallest over the ranks, the serial one
-    return whole ? dt : returnReduce(dt, minOp<scalar>());
+    return part_.whole() ? dt : returnReduce(dt, minOp<scalar>());
 }
 
 

@@ -1044,6 +1044,16 @@ Foam::labelList Foam::crackNetwork::restrictTo
 }
 
 
+Foam::label Foam::crackNetwork::cvRank
+(
+    const UList<label>& triangleOwner,
+    const label i
+) const
+{
+    return triangleOwner[topo_.jointNodes()[cvJoint_[i]][0]/3];
+}
+
+
 void Foam::crackNetwork::unrestrict()
 {
     restricted_ = false;
@@ -1057,7 +1067,7 @@ void Foam::crackNetwork::distributeGas(const UList<label>& triangleOwner)
     gasRank_.setSize(cvJoint_.size());
     forAll(cvJoint_, i)
     {
-        gasRank_[i] = triangleOwner[topo_.jointNodes()[cvJoint_[i]][0]/3];
+        gasRank_[i] = cvRank(triangleOwner, i);
     }
 }
 
@@ -1070,8 +1080,7 @@ void Foam::crackNetwork::shareWork(const UList<label>& triangleOwner)
     scalarList w(work_.size());
     forAll(cvJoint_, i)
     {
-        const label n = topo_.jointNodes()[cvJoint_[i]][0];
-        w[i] = triangleOwner[n/3] == rank ? work_[i] : 0;
+        w[i] = cvRank(triangleOwner, i) == rank ? work_[i] : 0;
     }
     Pstream::listCombineGather(w, plusEqOp<scalar>());
     Pstream::listCombineScatter(w);
