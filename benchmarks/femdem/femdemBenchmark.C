@@ -26,6 +26,8 @@ Usage
     cases: the letters of the cases to run, i intact, b blocky, f
     fragmented (default ibf; e.g. f for a profile of the fragmented case);
     skin: potentialCoeffs.skin (default: the contact law's)
+    Where the CPU has AVX-512, the intact case without contact also runs
+    with the triangle loop's scalar code: the same hash, its own rate.
 
 \*---------------------------------------------------------------------------*/
 
@@ -159,6 +161,15 @@ void run
 } // End anonymous namespace
 
 
+std::string codeName(const label code)
+{
+    return
+        code == femdemSolid::AVX512
+      ? "x86-64-v4 (AVX-512), blocks of lanes"
+      : "baseline x86-64, scalar loop";
+}
+
+
 int main(int argc, char *argv[])
 {
     const label nx = argc > 1 ? atoi(argv[1]) : 250;
@@ -173,6 +184,12 @@ int main(int argc, char *argv[])
     {
         return cases.find(c) != std::string::npos;
     };
+    std::printf
+    (
+        ">> triangle loop: %s code (the CPU's best: %s)\n",
+        codeName(femdemSolid::vectorCode()).c_str(),
+        codeName(femdemSolid::cpuVectorCode()).c_str()
+    );
 
     // Intact: 0.5 x 0.4 m, compressed from the top
     if (runs('i'))
@@ -183,6 +200,21 @@ int main(int argc, char *argv[])
         );
         femdemSolid noContact(mesh, props("none"));
         run("intact, contactLaw none", noContact, steps);
+        // The triangle loop's other codes on the same case: the same hash
+        // (bitwise the same forces), their own rates
+        const femdemSolid::vectorCodeType best = femdemSolid::vectorCode();
+        for (label code = best - 1; code >= 0; --code)
+        {
+            femdemSolid::setVectorCode(femdemSolid::vectorCodeType(code));
+            femdemSolid other(mesh, props("none"));
+            run
+            (
+                "intact, contactLaw none, triangle code " + codeName(code),
+                other,
+                steps
+            );
+        }
+        femdemSolid::setVectorCode(best);
         femdemSolid solid(mesh, props("potential"));
         run("intact, contactLaw potential", solid, steps);
     }

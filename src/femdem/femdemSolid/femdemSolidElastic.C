@@ -45,6 +45,26 @@ inline elasticLaws::kinematics kinematicsOf
 }
 
 
+//- Add the nodal terms H = -a P Dm^-T of one triangle to its nodes
+inline void addTerms
+(
+    vector2D* f,
+    const label n0,
+    const scalar Hxx,
+    const scalar Hxy,
+    const scalar Hyx,
+    const scalar Hyy
+)
+{
+    f[n0 + 1].x() += Hxx;
+    f[n0 + 1].y() += Hyx;
+    f[n0 + 2].x() += Hxy;
+    f[n0 + 2].y() += Hyy;
+    f[n0].x() -= Hxx + Hxy;
+    f[n0].y() -= Hyx + Hyy;
+}
+
+
 //- Add the nodal forces -a P Dm^-T (a = A0) of one triangle
 inline void addNodal
 (
@@ -55,16 +75,12 @@ inline void addNodal
     const tensor2D& P
 )
 {
-    const scalar Hxx = -a*(P.xx()*D.xx() + P.xy()*D.xy());
-    const scalar Hxy = -a*(P.xx()*D.yx() + P.xy()*D.yy());
-    const scalar Hyx = -a*(P.yx()*D.xx() + P.yy()*D.xy());
-    const scalar Hyy = -a*(P.yx()*D.yx() + P.yy()*D.yy());
-    f[n0 + 1].x() += Hxx;
-    f[n0 + 1].y() += Hyx;
-    f[n0 + 2].x() += Hxy;
-    f[n0 + 2].y() += Hyy;
-    f[n0].x() -= Hxx + Hxy;
-    f[n0].y() -= Hyx + Hyy;
+    addTerms
+    (
+        f, n0,
+        -a*(P.xx()*D.xx() + P.xy()*D.xy()), -a*(P.xx()*D.yx() + P.xy()*D.yy()),
+        -a*(P.yx()*D.xx() + P.yy()*D.xy()), -a*(P.yx()*D.yx() + P.yy()*D.yy())
+    );
 }
 
 
@@ -121,13 +137,14 @@ struct stepAccount
     label triangle = -1;
     label bad = -1;     //- first triangle with a non-finite frequency
 
-    inline void add
+    //- One triangle's data from its ingredients: w2, the rate term |G|^2
+    //  r2 and the damping term xi2M r2 s2max/Q (used if xi2M > 0)
+    inline void addData
     (
         const label t,
         const scalar w2,
-        const elasticLaws::kinematics& k,
-        const tensor2D& G,
-        const scalar Q,
+        const scalar rateTerm,
+        const scalar xiTerm,
         const scalar xi2M
     )
     {
@@ -140,13 +157,30 @@ struct stepAccount
         {
             bad = t;    // NaN or infinite: reported by setStableTimeStep
         }
-        const scalar iJ = 1/max(mag(k.J), elasticLaw::Jmin());
-        const scalar r2 = k.s2max*iJ*iJ;
-        rate2 = max(rate2, magSqr(G)*r2);
+        rate2 = max(rate2, rateTerm);
         if (xi2M > 0)
         {
-            xi2 = max(xi2, xi2M*r2*k.s2max/Q);
+            xi2 = max(xi2, xiTerm);
         }
+    }
+
+    //- One triangle's data from its state
+    inline void add
+    (
+        const label t,
+        const scalar w2,
+        const elasticLaws::kinematics& k,
+        const tensor2D& G,
+        const scalar Q,
+        const scalar xi2M
+    )
+    {
+        const scalar iJ = 1/max(mag(k.J), elasticLaw::Jmin());
+        const scalar r2 = k.s2max*iJ*iJ;
+        addData
+        (
+            t, w2, magSqr(G)*r2, xi2M > 0 ? xi2M*r2*k.s2max/Q : 0, xi2M
+        );
     }
 
     //- The step data (a bad triangle is reported as a NaN frequency)
@@ -160,8 +194,197 @@ struct stepAccount
 };
 
 
+//- One block of triangles as lanes (structure of arrays): the triangle
+//  loop gathers a block's nodes and constants into it, does its
+//  arithmetic lane by lane in loops that vectorise across triangles, and
+//  adds the nodal forces and stable-step data triangle by triangle
+struct triangleLanes
+{
+    static constexpr label size = 64;
+    label t[size];
+    //- The nodes 0, 1, 2 of each triangle (x, y): copied (GCC does not
+    //  vectorise the solid's groups of 6 scalars per triangle)
+    scalar x[6][size];
+    scalar v[6][size];
+    //- A block given by triangle ids: its other inputs copied in the
+    //  solid's layout (a contiguous block's are read in place)
+    scalar D[4*size];       //- Dm^-1: xx, xy, yx, yy
+    scalar A0[size];
+    scalar stepScale[size]; //- reference part of the element frequency
+    scalar springs[size];   //- joint and contact springs at its nodes
+    //- Material constants per lane (filled once for a solid of one
+    //  material)
+    scalar c[8][size];      //- elastic constants: lambda, mu, s0xx, s0xy,
+                            //  s0yy, s0max, gMin, dgMin
+    scalar etaC[size];      //- damping: eta = etaC sqrt(2 A0)
+    scalar xi2M[size];
+    scalar lnJ[size];
+    scalar He[4][size];     //- elastic nodal terms Hxx, Hxy, Hyx, Hyy
+    scalar Hv[4][size];     //- viscous nodal terms
+    scalar w2[size];        //- element frequency squared (with springs)
+    scalar rate[size];      //- |G|^2 s_max^2/|J|^2
+    scalar xi[size];        //- xi^2 of the current state (damped materials)
+};
+
+
+//- Where the lanes' inputs are: the nodes' x and v in the lanes, the
+//  rest in the solid's layout: Dm^-1 (4 values per triangle), A0,
+//  stepScale, springs (1 each)
+static_assert
+(
+    sizeof(vector2D) == 2*sizeof(scalar) && sizeof(tensor2D) == 4*sizeof(scalar),
+    "laneInputs reads vector2D and tensor2D lists as arrays of scalars"
+);
+
+struct laneInputs
+{
+    const scalar* D;
+    const scalar* A0;
+    const scalar* stepScale;
+    const scalar* springs;
+};
+
+
+//- The kinematics of lane j (the operations of kinematicsOf)
+inline elasticLaws::kinematics kinematicsOfLane
+(
+    const scalar x[6][triangleLanes::size],
+    const scalar* Ds,
+    const label j
+)
+{
+    const scalar* D = Ds + 4*j;
+    const scalar d1x = x[2][j] - x[0][j], d1y = x[3][j] - x[1][j];
+    const scalar d2x = x[4][j] - x[0][j], d2y = x[5][j] - x[1][j];
+    const scalar Dxx = D[0], Dxy = D[1];
+    const scalar Dyx = D[2], Dyy = D[3];
+    return elasticLaws::kinematics
+    (
+        d1x*Dxx + d2x*Dyx, d1x*Dxy + d2x*Dyy,
+        d1y*Dxx + d2y*Dyx, d1y*Dxy + d2y*Dyy
+    );
+}
+
+
+//- The nodal terms of addNodal (H = -a P Dm^-T) into lane j of H
+inline void nodalTermsOfLane
+(
+    scalar H[4][triangleLanes::size],
+    const label j,
+    const scalar Dxx, const scalar Dxy, const scalar Dyx, const scalar Dyy,
+    const scalar a,
+    const tensor2D& P
+)
+{
+    H[0][j] = -a*(P.xx()*Dxx + P.xy()*Dxy);
+    H[1][j] = -a*(P.xx()*Dyx + P.xy()*Dyy);
+    H[2][j] = -a*(P.yx()*Dxx + P.yy()*Dxy);
+    H[3][j] = -a*(P.yx()*Dyx + P.yy()*Dyy);
+}
+
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#define FEMDEM_V4 1
+
+//- The arithmetic of one block, lane by lane: log J (glibc's scalar log,
+//  its own pass), then kinematics, stress, rate, viscous stress, nodal
+//  terms and stable-step data. No branch in the second loop: values are
+//  selected, and what a branch of the scalar loop would not compute is
+//  computed from harmless operands (the floating-point traps stay quiet),
+//  so every lane does exactly the scalar loop's operations. Compiled for
+//  x86-64-v4 (AVX-512: 8 lanes per instruction), run where the CPU has it
+//  (femdemSolid::vectorCode); no floating-point contraction
+//  (-ffp-contract=off, Make/options), so it gives the scalar loop's bits.
+//  (For the baseline target and x86-64-v3, AVX2, GCC 12 vectorises the
+//  loop only in part: the divisions it moves into branches need AVX-512's
+//  masks. That code measured no faster than the scalar loop, which
+//  therefore runs on CPUs without AVX-512.)
+template<class Law, bool Forces>
+__attribute__((target("arch=x86-64-v4"))) void laneArithmeticV4
+(
+    triangleLanes* __restrict Lp,
+    const scalar* __restrict Ds,
+    const scalar* __restrict A0,
+    const scalar* __restrict stepScale,
+    const scalar* __restrict springs,
+    const label n
+)
+{
+    triangleLanes& L = *Lp;
+    if (Law::usesLogJ)
+    {
+        for (label j = 0; j < n; ++j)
+        {
+            L.lnJ[j] = kinematicsOfLane(L.x, Ds, j).J;
+        }
+        for (label j = 0; j < n; ++j)
+        {
+            L.lnJ[j] = elasticLaws::neoHookean::logJ(L.lnJ[j]);
+        }
+    }
+    for (label j = 0; j < n; ++j)
+    {
+        // (the material's constants gathered into the lanes: GCC does not
+        // vectorise loads of a struct's members through an index)
+        const elasticConstants c
+        {
+            L.c[0][j], L.c[1][j], L.c[2][j], L.c[3][j], L.c[4][j], L.c[5][j],
+            L.c[6][j], L.c[7][j], 0
+        };
+        const elasticLaws::kinematics k = kinematicsOfLane(L.x, Ds, j);
+        tensor2D P;
+        scalar Q;
+        Law::stress(k, c, L.lnJ[j], P, Q);
+
+        // rateOf
+        const scalar* D = Ds + 4*j;
+        const scalar Dxx = D[0], Dxy = D[1];
+        const scalar Dyx = D[2], Dyy = D[3];
+        const scalar w1x = L.v[2][j] - L.v[0][j], w1y = L.v[3][j] - L.v[1][j];
+        const scalar w2x = L.v[4][j] - L.v[0][j], w2y = L.v[5][j] - L.v[1][j];
+        const tensor2D G
+        (
+            w1x*Dxx + w2x*Dyx, w1x*Dxy + w2x*Dyy,
+            w1y*Dxx + w2y*Dyx, w1y*Dxy + w2y*Dyy
+        );
+
+        // stepAccount::add's ingredients (used where xi2M > 0; Q > 0 for
+        // a triangle that is not degenerate: the floor only keeps a lane
+        // that is not used, or a degenerate one, from a division by zero)
+        L.w2[j] = stepScale[j]*Q + springs[j];
+        const scalar iJ = 1/max(mag(k.J), elasticLaw::Jmin());
+        const scalar r2 = k.s2max*iJ*iJ;
+        L.rate[j] = magSqr(G)*r2;
+        const scalar xi2M = L.xi2M[j];
+        L.xi[j] = xi2M*r2*k.s2max/max(Q, VSMALL);
+
+        if (!Forces) continue;
+        const scalar a = A0[j];
+        nodalTermsOfLane(L.He, j, Dxx, Dxy, Dyx, Dyy, a, P);
+        // Undamped materials: the rate is replaced by 0 (not multiplied:
+        // a non-finite rate would raise a trap the scalar loop does not)
+        const scalar etaC = L.etaC[j];
+        const bool damped = etaC > 0;
+        const tensor2D Gv
+        (
+            damped ? G.xx() : 0, damped ? G.xy() : 0,
+            damped ? G.yx() : 0, damped ? G.yy() : 0
+        );
+        const scalar eta = etaC*std::sqrt(2*a);
+        nodalTermsOfLane
+        (
+            L.Hv, j, Dxx, Dxy, Dyx, Dyy, a, viscousStress(k, Gv, eta)
+        );
+    }
+}
+#endif
+
+
+
+
 //- The triangle loop over one law group (ids: the triangles, null for
-//  all): stable-step data and, if Forces, the elastic and viscous forces
+//  all): stable-step data and, if Forces, the elastic and viscous forces,
+//  in blocks of triangleLanes::size
 template<bool Forces>
 struct triangleKernel
 {
@@ -176,9 +399,101 @@ struct triangleKernel
     vector2D* pe;
     vector2D* pv;
     stepAccount step;
+    triangleLanes L;
 
+    //- Material of the constants in all lanes (-1: per lane; initialised
+    //  so)
+    label laneMaterial;
+
+    //- The material constants of triangles t .. (n of them) into the
+    //  lanes: once for a run of one material
+    void setMaterials(const label* t, const label n)
+    {
+        const label m0 = matOf[t[0]];
+        bool uniform = true;
+        for (label j = 1; j < n; ++j) uniform = uniform && matOf[t[j]] == m0;
+        if (uniform && m0 == laneMaterial) return;
+        auto fill = [&](const label j, const label m)
+        {
+            const elasticConstants& c = mats.c[m];
+            L.c[0][j] = c.lambda;
+            L.c[1][j] = c.mu;
+            L.c[2][j] = c.s0xx;
+            L.c[3][j] = c.s0xy;
+            L.c[4][j] = c.s0yy;
+            L.c[5][j] = c.s0max;
+            L.c[6][j] = c.gMin;
+            L.c[7][j] = c.dgMin;
+            L.etaC[j] = mats.etaC[m];
+            L.xi2M[j] = mats.xi2M[m];
+        };
+        if (uniform)
+        {
+            for (label j = 0; j < triangleLanes::size; ++j) fill(j, m0);
+            laneMaterial = m0;
+        }
+        else
+        {
+            for (label j = 0; j < n; ++j) fill(j, matOf[t[j]]);
+            laneMaterial = -1;
+        }
+    }
+
+    //- The inputs of triangles ids[i0 .. i0 + n) (i0 .. when null): read
+    //  in place for a contiguous block, copied into the lanes otherwise
+    laneInputs inputs(const label* ids, const label i0, const label n)
+    {
+        for (label j = 0; j < n; ++j) L.t[j] = ids ? ids[i0 + j] : i0 + j;
+        setMaterials(L.t, n);
+        for (label j = 0; j < n; ++j)
+        {
+            const label n0 = 3*L.t[j];
+            for (label k = 0; k < 3; ++k)
+            {
+                L.x[2*k][j] = x[n0 + k].x();
+                L.x[2*k + 1][j] = x[n0 + k].y();
+                L.v[2*k][j] = v[n0 + k].x();
+                L.v[2*k + 1][j] = v[n0 + k].y();
+            }
+        }
+        if (!ids)
+        {
+            return laneInputs
+            {
+                &Di[i0].xx(), A0 + i0, stepScale + i0, springs + i0
+            };
+        }
+        for (label j = 0; j < n; ++j)
+        {
+            const label t = L.t[j];
+            const tensor2D& D = Di[t];
+            L.D[4*j] = D.xx();
+            L.D[4*j + 1] = D.xy();
+            L.D[4*j + 2] = D.yx();
+            L.D[4*j + 3] = D.yy();
+            L.A0[j] = A0[t];
+            L.stepScale[j] = stepScale[t];
+            L.springs[j] = springs[t];
+        }
+        return laneInputs{L.D, L.A0, L.stepScale, L.springs};
+    }
+
+    //- Add lane j's nodal terms H to the triangle's nodes (addNodal)
+    static inline void scatter
+    (
+        vector2D* f,
+        const label n0,
+        const scalar H[4][triangleLanes::size],
+        const label j
+    )
+    {
+        addTerms(f, n0, H[0][j], H[1][j], H[2][j], H[3][j]);
+    }
+
+    //- The scalar loop, triangle by triangle (the reference: the lanes
+    //  give its bits)
     template<class Law>
-    void run(const label* ids, const label n)
+    void runScalar(const label* ids, const label n)
     {
         for (label i = 0; i < n; ++i)
         {
@@ -201,6 +516,45 @@ struct triangleKernel
             }
         }
     }
+
+    //- The loop in blocks of lanes (AVX-512 code), or the scalar loop
+    template<class Law>
+    void run(const label* ids, const label n)
+    {
+#ifdef FEMDEM_V4
+        if (femdemSolid::vectorCode() == femdemSolid::AVX512)
+        {
+            runLanes<Law>(ids, n);
+            return;
+        }
+#endif
+        runScalar<Law>(ids, n);
+    }
+
+#ifdef FEMDEM_V4
+    //- The loop in blocks of triangleLanes::size
+    template<class Law>
+    void runLanes(const label* ids, const label n)
+    {
+        for (label i0 = 0; i0 < n; i0 += triangleLanes::size)
+        {
+            const label nb = min(triangleLanes::size, n - i0);
+            const laneInputs in = inputs(ids, i0, nb);
+            laneArithmeticV4<Law, Forces>
+            (
+                &L, in.D, in.A0, in.stepScale, in.springs, nb
+            );
+            for (label j = 0; j < nb; ++j)
+            {
+                const label t = L.t[j];
+                step.addData(t, L.w2[j], L.rate[j], L.xi[j], L.xi2M[j]);
+                if (!Forces) continue;
+                scatter(pe, 3*t, L.He, j);
+                if (L.etaC[j] > 0) scatter(pv, 3*t, L.Hv, j);
+            }
+        }
+    }
+#endif
 };
 
 
@@ -241,6 +595,42 @@ struct energyKernel
 };
 
 } // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * //
+
+namespace
+{
+    //- -1: not decided yet (the switch and the CPU decide on first use)
+    int chosenCode = -1;
+}
+
+
+Foam::femdemSolid::vectorCodeType Foam::femdemSolid::cpuVectorCode()
+{
+#ifdef FEMDEM_V4
+    if (__builtin_cpu_supports("x86-64-v4")) return AVX512;
+#endif
+    return BASELINE;
+}
+
+
+Foam::femdemSolid::vectorCodeType Foam::femdemSolid::vectorCode()
+{
+    if (chosenCode < 0)
+    {
+        const label level =
+            debug::optimisationSwitch("femdemVectorKernels", 1);
+        chosenCode = min(max(level, label(0)), label(cpuVectorCode()));
+    }
+    return vectorCodeType(chosenCode);
+}
+
+
+void Foam::femdemSolid::setVectorCode(const vectorCodeType code)
+{
+    chosenCode = min(code, cpuVectorCode());
+}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -330,7 +720,7 @@ Foam::femdemSolid::stableStep Foam::femdemSolid::addTriangleForces
     {
         x_.cdata(), v_.cdata(), DmInv_.cdata(), area0_.cdata(),
         triangleMaterial_.cdata(), stepScale_.cdata(), springOmega2_.cdata(),
-        mats, fe.data(), fv.data(), stepAccount()
+        mats, fe.data(), fv.data(), stepAccount(), triangleLanes(), -1
     };
     // A partitioned solid's halo triangles push halo nodes only: skipped
     // (their stable-step data too: every triangle is owned by one rank,
@@ -443,7 +833,7 @@ void Foam::femdemSolid::updateStableTimeStep()
     {
         x_.cdata(), v_.cdata(), DmInv_.cdata(), area0_.cdata(),
         triangleMaterial_.cdata(), stepScale_.cdata(), springOmega2_.cdata(),
-        mats, nullptr, nullptr, stepAccount()
+        mats, nullptr, nullptr, stepAccount(), triangleLanes(), -1
     };
     forEachLawGroup(kernel);
     stableStep s;
