@@ -1,12 +1,15 @@
-// The triangle loop's AVX-512 code (blocks of lanes, femdemSolidElastic.C)
-// against its scalar loop: the same stable step, forces and trajectory bit
-// for bit, on solids whose triangles are crushed below Jmin and inverted,
-// with one material (contiguous blocks) and with two materials of different
-// elastic laws, one damped (law groups: blocks gathered by triangle ids,
-// constants per lane)
+// The AVX-512 code of the triangle and joint loops (blocks of lanes,
+// femdemSolidElastic.C, cohesiveLawLanes.H) against their scalar loops: the
+// same stable step, forces, damage, broken joints and trajectory bit for
+// bit, on solids whose triangles are crushed below Jmin and inverted and
+// whose joints open, slide, soften and break: one material (contiguous
+// blocks, one joint class), and two materials of different elastic laws,
+// one damped, with Weibull joint strengths and an in-situ stress (law
+// groups gathered by triangle ids, three joint classes, constants per lane)
 #include <gtest/gtest.h>
 #include "femdemTestTools.H"
 #include "Random.H"
+#include "mathematicalConstants.H"
 #include <cstring>
 
 using namespace Foam;
@@ -14,16 +17,21 @@ using namespace femdemTest;
 
 namespace
 {
-    //- Distort every triangle (random node offsets of 30 % of a cell),
-    //  crush every 17th to 2 % of its size (J = 4e-4 < Jmin) and invert
-    //  every 23rd; random velocities
+    //- Distort the solid: a smooth displacement of up to 30 % of a cell
+    //  (the joints stay closed), node offsets of 2 um (the joints open and
+    //  slide into softening: peak openings are about 1e-8 m, softening
+    //  spans about 1e-5 m); crush every 17th triangle to 2 % of its size
+    //  (J = 4e-4 < Jmin) and invert every 23rd (their joints break); random
+    //  velocities
     void distort(femdemSolid& s, const scalar h)
     {
         Random rnd(7);
         List<vector2D>& x = s.xRef();
+        const scalar w = constant::mathematical::twoPi/0.07;
         for (vector2D& p : x)
         {
-            p += 0.3*h*vector2D(rnd.sample01<scalar>() - 0.5, rnd.sample01<scalar>() - 0.5);
+            p += 0.3*h*vector2D(std::sin(w*p.y()), std::cos(w*p.x()))
+              + 2e-6*vector2D(rnd.sample01<scalar>() - 0.5, rnd.sample01<scalar>() - 0.5);
         }
         for (label t = 0; 3*t < x.size(); ++t)
         {
@@ -43,7 +51,8 @@ namespace
         }
     }
 
-    //- Nodes whose x, v or force differ in any bit
+    //- Nodes whose x, v or force differ in any bit, plus joints whose
+    //  damage or state differ
     label differing(const femdemSolid& a, const femdemSolid& b)
     {
         label n = 0;
@@ -52,6 +61,14 @@ namespace
             n += std::memcmp(&a.x()[i], &b.x()[i], sizeof(vector2D)) != 0
               || std::memcmp(&a.v()[i], &b.v()[i], sizeof(vector2D)) != 0
               || std::memcmp(&a.force()[i], &b.force()[i], sizeof(vector2D)) != 0;
+        }
+        forAll(a.jointDamage(), j)
+        {
+            n += std::memcmp
+                (
+                    &a.jointDamage()[j], &b.jointDamage()[j], sizeof(scalar)
+                ) != 0
+              || a.jointBroken()[j] != b.jointBroken()[j];
         }
         return n;
     }
@@ -101,10 +118,21 @@ namespace
         {
             minJ = min(minJ, det(defGrad(scalarSolid, t)));
         }
+        label nBroken = 0, nSoftening = 0;
+        forAll(scalarSolid.jointDamage(), j)
+        {
+            nBroken += scalarSolid.jointBroken()[j];
+            const scalar D = scalarSolid.jointDamage()[j];
+            nSoftening += !scalarSolid.jointBroken()[j] && D > 0 && D < 1;
+        }
         std::cout << "    " << name << ": " << mesh.nTriangles()
-            << " triangles, stable step " << dt0 << ", min J after 20 steps "
-            << minJ << ", nodes differing in x, v or force (any step): "
-            << worst << std::endl;
+            << " triangles, " << scalarSolid.nJoints() << " joints, stable step "
+            << dt0 << "; after 20 steps min J " << minJ << ", joints broken "
+            << nBroken << ", softening " << nSoftening
+            << "; nodes and joints differing (any step): " << worst
+            << std::endl;
+        EXPECT_GT(nBroken, 0) << name << ": no joint broke";
+        EXPECT_GT(nSoftening, 0) << name << ": no joint softening";
         ::testing::Test::RecordProperty
         (
             name.substr(0, 3) + "_differing", std::to_string(worst)
@@ -135,10 +163,22 @@ TEST(femdemVectorCode, lanesGiveTheScalarBits)
     );
     compareCodes
     (
-        "two materials (neo-Hookean damped, St Venant-Kirchhoff undamped)",
+        "two materials (neo-Hookean damped with Weibull strengths, St"
+        " Venant-Kirchhoff undamped with in-situ stress)",
         "contactLaw none; materials { "
-      + material("rock", "elasticLaw neoHookean; dampingRatio 0.1;") + " "
-      + material("soft", "elasticLaw StVenantKirchhoff;", "5e9", "0.3", "2000")
+      + material
+        (
+            "rock",
+            "elasticLaw neoHookean; dampingRatio 0.1;"
+            " strengthDistribution { type Weibull; modulus 4; seed 3; }"
+        )
+      + " "
+      + material
+        (
+            "soft",
+            "elasticLaw StVenantKirchhoff; initialStress (-5e6 1e6 -2e6);",
+            "5e9", "0.3", "2000"
+        )
       + " }",
         true
     );
