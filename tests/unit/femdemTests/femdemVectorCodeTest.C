@@ -1,11 +1,14 @@
-// The AVX-512 code of the triangle and joint loops (blocks of lanes,
-// femdemSolidElastic.C, cohesiveLawLanes.H) against their scalar loops: the
-// same stable step, forces, damage, broken joints and trajectory bit for
-// bit, on solids whose triangles are crushed below Jmin and inverted and
-// whose joints open, slide, soften and break: one material (contiguous
-// blocks, one joint class), and two materials of different elastic laws,
-// one damped, with Weibull joint strengths and an in-situ stress (law
-// groups gathered by triangle ids, three joint classes, constants per lane)
+// The AVX-512 code of the triangle, joint and contact loops (blocks of
+// lanes: femdemSolidElastic.C, cohesiveLawTemplates.H, potentialContact.C)
+// against their scalar loops: the same stable step, forces, damage, broken
+// joints and trajectory bit for bit, on solids whose triangles are crushed
+// below Jmin and inverted and whose joints open, slide, soften and break:
+// one material (contiguous blocks, one joint class); two materials of
+// different elastic laws, one damped, with Weibull joint strengths and an
+// in-situ stress (law groups gathered by triangle ids, three joint classes,
+// constants per lane); and the same two materials with every joint broken
+// and potential contact between most neighbours, with friction between one
+// material's triangles and none across
 #include <gtest/gtest.h>
 #include "femdemTestTools.H"
 #include "Random.H"
@@ -77,7 +80,8 @@ namespace
     (
         const std::string& name,
         const std::string& props,
-        const bool twoMaterials
+        const bool twoMaterials,
+        const bool fragmented = false
     )
     {
         // 13 x 7 cells: 182 triangles, blocks of 64 with a partial one
@@ -91,6 +95,15 @@ namespace
           : base;
         femdemSolid scalarSolid(mesh, dict(props));
         femdemSolid laneSolid(mesh, dict(props));
+        if (fragmented)
+        {
+            // Every triangle a body: the contact narrow phase everywhere
+            for (label j = 0; j < scalarSolid.nJoints(); ++j)
+            {
+                scalarSolid.setBroken(j);
+                laneSolid.setBroken(j);
+            }
+        }
         distort(scalarSolid, h);
         distort(laneSolid, h);
 
@@ -103,7 +116,7 @@ namespace
         EXPECT_EQ(0, std::memcmp(&dt0, &dt1, sizeof(scalar)))
             << name << ": stable step " << dt0 << " vs " << dt1;
 
-        label worst = 0;
+        label worst = 0, maxActive = 0;
         for (label i = 0; i < 20; ++i)
         {
             femdemSolid::setVectorCode(femdemSolid::BASELINE);
@@ -111,6 +124,7 @@ namespace
             femdemSolid::setVectorCode(femdemSolid::AVX512);
             laneSolid.step();
             worst = max(worst, differing(scalarSolid, laneSolid));
+            maxActive = max(maxActive, scalarSolid.contact().nActivePairs());
         }
         femdemSolid::setVectorCode(femdemSolid::cpuVectorCode());
         scalar minJ = GREAT;
@@ -129,10 +143,19 @@ namespace
             << " triangles, " << scalarSolid.nJoints() << " joints, stable step "
             << dt0 << "; after 20 steps min J " << minJ << ", joints broken "
             << nBroken << ", softening " << nSoftening
+            << ", active contact pairs (most in a step) " << maxActive
             << "; nodes and joints differing (any step): " << worst
             << std::endl;
-        EXPECT_GT(nBroken, 0) << name << ": no joint broke";
-        EXPECT_GT(nSoftening, 0) << name << ": no joint softening";
+        if (fragmented)
+        {
+            EXPECT_GT(maxActive, scalarSolid.nJoints()/2)
+                << name << ": contact not active between most neighbours";
+        }
+        else
+        {
+            EXPECT_GT(nBroken, 0) << name << ": no joint broke";
+            EXPECT_GT(nSoftening, 0) << name << ": no joint softening";
+        }
         ::testing::Test::RecordProperty
         (
             name.substr(0, 3) + "_differing", std::to_string(worst)
@@ -145,6 +168,7 @@ namespace
 
 TEST(femdemVectorCode, lanesGiveTheScalarBits)
 {
+    // (the contact narrow phase in lanes: the third case)
     const bool lanes = femdemSolid::cpuVectorCode() == femdemSolid::AVX512;
     std::cout << "    this CPU: "
         << (lanes
@@ -180,6 +204,21 @@ TEST(femdemVectorCode, lanesGiveTheScalarBits)
             "5e9", "0.3", "2000"
         )
       + " }",
+        true
+    );
+    compareCodes
+    (
+        "fragmented, potential contact (friction between rock triangles,"
+        " none between rock and soft)",
+        "contactLaw potential; materials { "
+      + material("rock", "elasticLaw neoHookean; dampingRatio 0.1;") + " "
+      + material
+        (
+            "soft", "elasticLaw StVenantKirchhoff; friction 0;"
+            " contactPenalty 2e10;", "5e9", "0.3", "2000"
+        )
+      + " }",
+        true,
         true
     );
 }

@@ -9,6 +9,11 @@ License
 #include "addToRunTimeSelectionTable.H"
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#endif
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -110,6 +115,331 @@ inline void fit(Foam::DynamicList<T>& l, const Foam::label n)
     if (n > l.capacity()) l.setCapacity(l.capacity() ? n + n/8 : n);
     l.setSize(n);
 }
+
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#define FEMDEM_CONTACT_LANES 1
+
+//- The contactor edges that cross their targets, as lanes (structure of
+//  arrays): the inputs of integrateEdge, and per piece of the edge (at most
+//  4) the target's force terms, in the order integrateEdge subtracts them,
+//  and whether its friction and normal force were applied
+struct edgeLanes
+{
+    static constexpr Foam::label size = 96;     // a multiple of 8
+    double len[size], dx[size], dy[size];
+    double l0[3][size], dl[3][size], s0[size], s1[size];
+    double vA[2][size], vB[2][size], vT[6][size];
+    double p[size], mu[size], eta[size];
+    double fA[2][size], fB[2][size];
+    double friction[4][size], normal[4][size];
+    double tf[4][6][size], tn[4][6][size];
+};
+
+
+//- integrateEdge for 8 edges at a time, AVX-512 intrinsics: the same IEEE
+//  operations in the same order for every piece (no fused multiply-add;
+//  _mm512_max_pd(a, b) and _mm512_min_pd(a, b) are Foam::max(a, b) and
+//  Foam::min(a, b), a > b ? a : b and a < b ? a : b; quiet comparisons).
+//  The break points are sorted by a network (the same values as the
+//  insertion sort), the pieces past the last break point are empty (zero
+//  length: skipped by I <= 0 as an empty piece of the scalar loop is), and
+//  the divisions are masked to the lanes that use them (no trap)
+// (GCC 12's AVX-512 headers warn of an uninitialised temporary of their
+// own: its bug 105593)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+// The operations of the lanes (x86-64-v4 code; a lambda inside the target
+// function would not take its target)
+#define FEMDEM_V4_INLINE \
+    static inline __attribute__((target("arch=x86-64-v4"), always_inline))
+typedef __m512d V;
+typedef __mmask8 M;
+FEMDEM_V4_INLINE V ld(const double* p) { return _mm512_loadu_pd(p); }
+FEMDEM_V4_INLINE V neg(const V x)
+{
+    // (the sign flipped, as unary minus; 0 - x would give +0 for +0)
+    return _mm512_castsi512_pd
+    (
+        _mm512_xor_si512
+        (
+            _mm512_castpd_si512(x),
+            _mm512_set1_epi64(std::int64_t(0x8000000000000000ull))
+        )
+    );
+}
+FEMDEM_V4_INLINE M lt(const V a, const V b) { return _mm512_cmp_pd_mask(a, b, _CMP_LT_OQ); }
+FEMDEM_V4_INLINE M gt(const V a, const V b) { return _mm512_cmp_pd_mask(a, b, _CMP_GT_OQ); }
+FEMDEM_V4_INLINE M le(const V a, const V b) { return _mm512_cmp_pd_mask(a, b, _CMP_LE_OQ); }
+FEMDEM_V4_INLINE V mx(const V a, const V b) { return _mm512_max_pd(a, b); }
+FEMDEM_V4_INLINE V mn(const V a, const V b) { return _mm512_min_pd(a, b); }
+FEMDEM_V4_INLINE V add(const V a, const V b) { return _mm512_add_pd(a, b); }
+FEMDEM_V4_INLINE V sub(const V a, const V b) { return _mm512_sub_pd(a, b); }
+FEMDEM_V4_INLINE V mul(const V a, const V b) { return _mm512_mul_pd(a, b); }
+//- ell/6 (2 pa La + pa Lc + pc La + 2 pc Lc), e6 = ell/6
+FEMDEM_V4_INLINE V integral
+(
+    const V e6, const V pa, const V pc, const V La, const V Lc
+)
+{
+    const V two = _mm512_set1_pd(2);
+    return mul
+    (
+        e6,
+        add
+        (
+            add(add(mul(mul(two, pa), La), mul(pa, Lc)), mul(pc, La)),
+            mul(mul(two, pc), Lc)
+        )
+    );
+}
+#undef FEMDEM_V4_INLINE
+
+
+__attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
+(
+    edgeLanes* __restrict Lp,
+    const Foam::label n
+)
+{
+    edgeLanes& L = *Lp;
+    const V zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1);
+    const V three = _mm512_set1_pd(3);
+    const V six = _mm512_set1_pd(6), half = _mm512_set1_pd(0.5);
+    const V inf = _mm512_set1_pd(std::numeric_limits<double>::infinity());
+
+    for (Foam::label j = 0; j < n; j += 8)
+    {
+        const V len = ld(L.len + j), dx = ld(L.dx + j), dy = ld(L.dy + j);
+        const V s0 = ld(L.s0 + j), s1 = ld(L.s1 + j);
+        V l0[3], dl[3];
+        for (int i = 0; i < 3; ++i)
+        {
+            l0[i] = ld(L.l0[i] + j);
+            dl[i] = ld(L.dl[i] + j);
+        }
+
+        // Break points where the minimum changes branch (+inf: none)
+        V r[3];
+        for (int i = 0; i < 3; ++i)
+        {
+            const int k = (i + 1) % 3;
+            const V dd = sub(dl[i], dl[k]);
+            const V num = sub(l0[k], l0[i]);
+            const V lo = mul(s0, dd), hi = mul(s1, dd);
+            const M pos = gt(dd, zero), negd = lt(dd, zero);
+            const M maybe =
+                (pos & gt(num, lo) & lt(num, hi))
+              | (negd & lt(num, lo) & gt(num, hi));
+            const V q = _mm512_mask_div_pd(inf, maybe, num, dd);
+            const M valid = maybe & gt(q, s0) & lt(q, s1);
+            r[i] = _mm512_mask_blend_pd(valid, inf, q);
+        }
+        // Sorted (network) and capped at s1: the points of the pieces
+        const V a = mn(r[0], r[1]), b = mx(r[0], r[1]);
+        const V c = mn(b, r[2]), d = mx(b, r[2]);
+        const V e = mn(a, c), f = mx(a, c);
+        const V P[5] = {s0, mn(e, s1), mn(f, s1), mn(d, s1), s1};
+
+        const V iLen = _mm512_div_pd(one, len);
+        const V tx = mul(dx, iLen), ty = mul(dy, iLen);
+        const V nx = ty, ny = neg(tx);
+        const V vAx = ld(L.vA[0] + j), vAy = ld(L.vA[1] + j);
+        const V vBx = ld(L.vB[0] + j), vBy = ld(L.vB[1] + j);
+        V vT[6];
+        for (int i = 0; i < 6; ++i) vT[i] = ld(L.vT[i] + j);
+        const V p = ld(L.p + j), mu = ld(L.mu + j), eta = ld(L.eta + j);
+        const M damped = gt(eta, zero);
+
+        V lam[5][3], phi[5];
+        for (int k = 0; k < 5; ++k)
+        {
+            for (int i = 0; i < 3; ++i)
+            {
+                lam[k][i] = mx(add(l0[i], mul(P[k], dl[i])), zero);
+            }
+            phi[k] = mul(three, mn(lam[k][0], mn(lam[k][1], lam[k][2])));
+        }
+
+        V fAx = zero, fAy = zero, fBx = zero, fBy = zero;
+        for (int q = 0; q < 4; ++q)
+        {
+            const V sa = P[q], sc = P[q + 1];
+            const V pa = phi[q], pc = phi[q + 1];
+            const M skip = le(pa, zero) & le(pc, zero);
+            const V ell = mul(sub(sc, sa), len);
+            const V e6 = _mm512_div_pd(ell, six);
+            const V IA = integral(e6, pa, pc, sub(one, sa), sub(one, sc));
+            const V IB = integral(e6, pa, pc, sa, sc);
+            const V I = add(IA, IB);
+            const M applied = ~skip & gt(I, zero);
+            V IT[3];
+            for (int i = 0; i < 3; ++i)
+            {
+                IT[i] = integral(e6, pa, pc, lam[q][i], lam[q + 1][i]);
+            }
+            const V ITsum = add(add(IT[0], IT[1]), IT[2]);
+
+            // Friction at the piece's middle point
+            const M fric = applied & damped;
+            const V sm = mul(half, add(sa, sc));
+            const V vcx = add(mul(sub(one, sm), vAx), mul(sm, vBx));
+            const V vcy = add(mul(sub(one, sm), vAy), mul(sm, vBy));
+            V li[3], vtx = zero, vty = zero;
+            for (int i = 0; i < 3; ++i)
+            {
+                li[i] = mul(half, add(lam[q][i], lam[q + 1][i]));
+                vtx = add(vtx, mul(li[i], vT[2*i]));
+                vty = add(vty, mul(li[i], vT[2*i + 1]));
+            }
+            const V vt = add(mul(sub(vcx, vtx), tx), mul(sub(vcy, vty), ty));
+            V ft = mn(mul(mul(mu, p), I), mul(mul(eta, _mm512_abs_pd(vt)), ell));
+            ft = _mm512_mask_blend_pd(gt(vt, zero), ft, neg(ft));
+            const V Gx = mul(ft, tx), Gy = mul(ft, ty);
+            fAx = _mm512_mask_add_pd(fAx, fric, fAx, mul(sub(one, sm), Gx));
+            fAy = _mm512_mask_add_pd(fAy, fric, fAy, mul(sub(one, sm), Gy));
+            fBx = _mm512_mask_add_pd(fBx, fric, fBx, mul(sm, Gx));
+            fBy = _mm512_mask_add_pd(fBy, fric, fBy, mul(sm, Gy));
+            const V iL = _mm512_mask_div_pd
+            (
+                zero, fric, one, add(add(li[0], li[1]), li[2])
+            );
+            for (int i = 0; i < 3; ++i)
+            {
+                const V w = mul(li[i], iL);
+                _mm512_storeu_pd(L.tf[q][2*i] + j, mul(w, Gx));
+                _mm512_storeu_pd(L.tf[q][2*i + 1] + j, mul(w, Gy));
+            }
+
+            // Normal force
+            const V pnx = mul(neg(p), nx), pny = mul(neg(p), ny);
+            fAx = _mm512_mask_add_pd(fAx, applied, fAx, mul(IA, pnx));
+            fAy = _mm512_mask_add_pd(fAy, applied, fAy, mul(IA, pny));
+            fBx = _mm512_mask_add_pd(fBx, applied, fBx, mul(IB, pnx));
+            fBy = _mm512_mask_add_pd(fBy, applied, fBy, mul(IB, pny));
+            const V rr = _mm512_mask_div_pd(zero, applied, I, ITsum);
+            for (int i = 0; i < 3; ++i)
+            {
+                const V wi = mul(IT[i], rr);
+                _mm512_storeu_pd(L.tn[q][2*i] + j, mul(wi, pnx));
+                _mm512_storeu_pd(L.tn[q][2*i + 1] + j, mul(wi, pny));
+            }
+            _mm512_storeu_pd
+            (
+                L.friction[q] + j, _mm512_mask_blend_pd(fric, zero, one)
+            );
+            _mm512_storeu_pd
+            (
+                L.normal[q] + j, _mm512_mask_blend_pd(applied, zero, one)
+            );
+        }
+        _mm512_storeu_pd(L.fA[0] + j, fAx);
+        _mm512_storeu_pd(L.fA[1] + j, fAy);
+        _mm512_storeu_pd(L.fB[0] + j, fBx);
+        _mm512_storeu_pd(L.fB[1] + j, fBy);
+    }
+}
+
+
+//- A block of contactor-target calls as lanes: the inputs of the edge
+//  tests of forEachCrossingEdge and, per edge k of the contactor, their
+//  results
+struct callLanes
+{
+    static constexpr Foam::label size = 32;     // a multiple of 8
+    //- The contactor's nodes 0, 1, 2: x, y
+    double cx[6][size];
+    //- The target's box (xmin, ymin, xmax, ymax), the point of its edge i
+    //  (vertex (i + 1) % 3), its edge vectors and 1/(2 A)
+    double box[4][size];
+    double ax[3][size], ay[3][size], ex[3][size], ey[3][size];
+    double iA2[size];
+    //- 1 where edge k is free and the target's area positive
+    double valid[3][size];
+    //- Per edge k: lambda_i = l0 + s dl, the clipped range, the edge
+    //  vector and its squared length, 1 where it crosses the target
+    double l0[3][3][size], dl[3][3][size], s0[3][size], s1[3][size];
+    double dx[3][size], dy[3][size], len2[3][size], crosses[3][size];
+};
+
+
+//- The edge tests of forEachCrossingEdge for 8 calls at a time, AVX-512
+//  intrinsics: every test evaluated and combined (the same operations;
+//  the clipping's divisions masked to the lanes that are not trivially
+//  outside and divide, where dl is not 0)
+__attribute__((target("arch=x86-64-v4"))) void testCallsV4
+(
+    callLanes* __restrict Cp,
+    const Foam::label n
+)
+{
+    callLanes& C = *Cp;
+    const V zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1);
+    for (Foam::label j = 0; j < n; j += 8)
+    {
+        const V box0 = ld(C.box[0] + j), box1 = ld(C.box[1] + j);
+        const V box2 = ld(C.box[2] + j), box3 = ld(C.box[3] + j);
+        const V iA2 = ld(C.iA2 + j);
+        for (int k = 0; k < 3; ++k)
+        {
+            const int kB = k == 2 ? 0 : k + 1;
+            const V Ax = ld(C.cx[2*k] + j), Ay = ld(C.cx[2*k + 1] + j);
+            const V Bx = ld(C.cx[2*kB] + j), By = ld(C.cx[2*kB + 1] + j);
+            const M boxOut =
+                lt(mx(Ax, Bx), box0) | gt(mn(Ax, Bx), box2)
+              | lt(mx(Ay, By), box1) | gt(mn(Ay, By), box3);
+            const V dx = sub(Bx, Ax), dy = sub(By, Ay);
+            const V len2 = add(mul(dx, dx), mul(dy, dy));
+            V l0[3], dl[3];
+            M outside = 0;
+            for (int i = 0; i < 3; ++i)
+            {
+                const V exi = ld(C.ex[i] + j), eyi = ld(C.ey[i] + j);
+                l0[i] = mul
+                (
+                    sub
+                    (
+                        mul(exi, sub(Ay, ld(C.ay[i] + j))),
+                        mul(eyi, sub(Ax, ld(C.ax[i] + j)))
+                    ),
+                    iA2
+                );
+                dl[i] = mul(sub(mul(exi, dy), mul(eyi, dx)), iA2);
+                outside |= le(l0[i], zero) & le(add(l0[i], dl[i]), zero);
+            }
+            V s0 = zero, s1 = one;
+            for (int i = 0; i < 3; ++i)
+            {
+                const M below = lt(l0[i], zero);
+                const M above = lt(add(l0[i], dl[i]), zero);
+                const V r = _mm512_mask_div_pd
+                (
+                    zero, M(~outside & (below | above)), neg(l0[i]), dl[i]
+                );
+                s0 = _mm512_mask_blend_pd(below, s0, mx(s0, r));
+                s1 = _mm512_mask_blend_pd(M(~below & above), s1, mn(s1, r));
+                _mm512_storeu_pd(C.l0[k][i] + j, l0[i]);
+                _mm512_storeu_pd(C.dl[k][i] + j, dl[i]);
+            }
+            const M crosses =
+                gt(ld(C.valid[k] + j), zero) & ~boxOut & gt(len2, zero)
+              & ~outside & gt(s1, s0);
+            _mm512_storeu_pd(C.s0[k] + j, s0);
+            _mm512_storeu_pd(C.s1[k] + j, s1);
+            _mm512_storeu_pd(C.dx[k] + j, dx);
+            _mm512_storeu_pd(C.dy[k] + j, dy);
+            _mm512_storeu_pd(C.len2[k] + j, len2);
+            _mm512_storeu_pd
+            (
+                C.crosses[k] + j, _mm512_mask_blend_pd(crosses, zero, one)
+            );
+        }
+    }
+}
+
+#pragma GCC diagnostic pop
+#endif
 
 } // End anonymous namespace
 
@@ -376,26 +706,21 @@ void Foam::contactLaws::potential::buildList(const femdemSolid& solid)
 }
 
 
-bool Foam::contactLaws::potential::contactorTarget
+template<class Sink>
+void Foam::contactLaws::potential::forEachCrossingEdge
 (
     const femdemSolid& solid,
     const label c,
     const targetGeometry& tg,
-    const scalar p,
-    const scalar mu,
-    const scalar dt,
-    UList<vector2D>& f
+    Sink& sink
 ) const
 {
     const unsigned char freeC = solid.freeEdges()[c];
-    if (!freeC) return false;
+    if (!freeC) return;
 
     const vector2D* x = solid.x().cdata();
-    const vector2D* v = solid.v().cdata();
-    const scalar* invM = solid.invMass().cdata();
 
-    const label t = tg.t;
-    if (tg.A2 <= 0) return false;
+    if (tg.A2 <= 0) return;
     const scalar iA2 = tg.iA2;
     const scalar tx0 = tg.box[0], ty0 = tg.box[1];
     const scalar tx1 = tg.box[2], ty1 = tg.box[3];
@@ -403,8 +728,6 @@ bool Foam::contactLaws::potential::contactorTarget
     const scalar* ex = tg.ex;
     const scalar* ey = tg.ey;
 
-    bool any = false;
-    scalar fT[3][2] = {{0, 0}, {0, 0}, {0, 0}};
     for (label k = 0; k < 3; ++k)
     {
         if (!(freeC & (1u << k))) continue;
@@ -450,152 +773,203 @@ bool Foam::contactLaws::potential::contactorTarget
             else if (l1 < 0) s1 = min(s1, -l0[i]/dl[i]);
         }
         if (!(s1 > s0)) continue;
-        // The length only for an edge that crosses the target
-        const scalar len = std::sqrt(len2);
-
-        // Break points where the minimum changes branch
-        scalar sb[6];
-        label nb = 0;
-        sb[nb++] = s0;
-        for (label i = 0; i < 3; ++i)
+        const crossingEdge e
         {
-            const label j = (i + 1) % 3;
-            const scalar dd = dl[i] - dl[j];
-            const scalar num = l0[j] - l0[i];
-            // Divide only when r = num/dd may lie in (s0, s1)
-            const bool maybe =
-                dd > 0 ? (num > s0*dd && num < s1*dd)
-              : dd < 0 ? (num < s0*dd && num > s1*dd)
-              : false;
-            if (maybe)
-            {
-                const scalar r = num/dd;
-                if (r > s0 && r < s1) sb[nb++] = r;
-            }
-        }
-        sb[nb++] = s1;
-        // Insertion sort of the (at most 3) interior break points
-        for (label i = 2; i < nb - 1; ++i)
-        {
-            const scalar key = sb[i];
-            label m = i - 1;
-            while (m >= 1 && sb[m] > key) { sb[m + 1] = sb[m]; --m; }
-            sb[m + 1] = key;
-        }
-
-        // Outward normal and tangent of the contactor edge
-        const scalar iLen = 1/len;
-        const scalar tx = dx*iLen, ty = dy*iLen;
-        const scalar nx = ty, ny = -tx;
-        const vector2D& vA = v[nA];
-        const vector2D& vB = v[nB];
-        const label t0 = 3*t;
-
-        // Friction regularisation from the lightest node involved
-        scalar eta = 0;
-        if (mu > 0)
-        {
-            const scalar invMMax =
-                max(max(invM[nA], invM[nB]), tg.invMMax);
-            eta = frictionFactor_/(invMMax*len*dt);
-        }
-
-        // Barycentric coordinates and potential at the break points: phi
-        // and the shape functions are linear on each piece, so the
-        // integrals of phi N are exact from the end values
-        scalar lam[6][3], phi[6];
-        for (label k = 0; k < nb; ++k)
-        {
-            for (label i = 0; i < 3; ++i)
-            {
-                lam[k][i] = max(l0[i] + sb[k]*dl[i], scalar(0));
-            }
-            phi[k] = 3*min(lam[k][0], min(lam[k][1], lam[k][2]));
-        }
-
-        scalar fAx = 0, fAy = 0, fBx = 0, fBy = 0;
-        for (label q = 0; q + 1 < nb; ++q)
-        {
-            const scalar sa = sb[q], sc = sb[q + 1];
-            const scalar pa = phi[q], pc = phi[q + 1];
-            if (pa <= 0 && pc <= 0) continue;
-            const scalar ell = (sc - sa)*len;
-
-            // int phi L over the piece for L linear: ell/6 (2 pa La +
-            // pa Lc + pc La + 2 pc Lc)
-            auto integral = [&](const scalar La, const scalar Lc)
-            {
-                return ell/6*(2*pa*La + pa*Lc + pc*La + 2*pc*Lc);
-            };
-            const scalar IA = integral(1 - sa, 1 - sc);
-            const scalar IB = integral(sa, sc);
-            const scalar I = IA + IB;
-            if (I <= 0) continue;
-            scalar IT[3];
-            for (label i = 0; i < 3; ++i)
-            {
-                IT[i] = integral(lam[q][i], lam[q + 1][i]);
-            }
-            const scalar ITsum = IT[0] + IT[1] + IT[2];
-
-            // Friction of the piece at its middle point M: tangential force
-            // -min(mu p int phi, eta |v_t| l) sign(v_t), applied at M (edge
-            // shape functions / barycentric coordinates of M)
-            if (eta > 0)
-            {
-                const scalar sm = 0.5*(sa + sc);
-                const scalar vcx = (1 - sm)*vA.x() + sm*vB.x();
-                const scalar vcy = (1 - sm)*vA.y() + sm*vB.y();
-                scalar li[3], vtx = 0, vty = 0;
-                for (label i = 0; i < 3; ++i)
-                {
-                    li[i] = 0.5*(lam[q][i] + lam[q + 1][i]);
-                    vtx += li[i]*v[t0 + i].x();
-                    vty += li[i]*v[t0 + i].y();
-                }
-                const scalar vt = (vcx - vtx)*tx + (vcy - vty)*ty;
-                scalar ft = min(mu*p*I, eta*mag(vt)*ell);
-                if (vt > 0) ft = -ft;
-                const scalar Gx = ft*tx, Gy = ft*ty;
-                fAx += (1 - sm)*Gx; fAy += (1 - sm)*Gy;
-                fBx += sm*Gx; fBy += sm*Gy;
-                const scalar iL = 1/(li[0] + li[1] + li[2]);
-                for (label i = 0; i < 3; ++i)
-                {
-                    fT[i][0] -= li[i]*iL*Gx;
-                    fT[i][1] -= li[i]*iL*Gy;
-                }
-            }
-
-            // Normal force F = -p I n_c on the contactor (int phi n), split
-            // in the ratios IA/I, IB/I (contactor: F IA/I = -p IA n) and
-            // IT/ITsum (target; ITsum = I but for round-off)
-            const scalar pnx = -p*nx, pny = -p*ny;
-            fAx += IA*pnx; fAy += IA*pny;
-            fBx += IB*pnx; fBy += IB*pny;
-            const scalar r = I/ITsum;
-            for (label i = 0; i < 3; ++i)
-            {
-                const scalar wi = IT[i]*r;
-                fT[i][0] -= wi*pnx;
-                fT[i][1] -= wi*pny;
-            }
-            any = true;
-        }
-        f[nA].x() += fAx;
-        f[nA].y() += fAy;
-        f[nB].x() += fBx;
-        f[nB].y() += fBy;
+            nA, nB, dx, dy, len2, {l0[0], l0[1], l0[2]},
+            {dl[0], dl[1], dl[2]}, s0, s1
+        };
+        sink(e);
     }
+}
+
+
+bool Foam::contactLaws::potential::contactorTarget
+(
+    const femdemSolid& solid,
+    const label c,
+    const targetGeometry& tg,
+    const scalar p,
+    const scalar mu,
+    const scalar dt,
+    UList<vector2D>& f
+) const
+{
+    bool any = false;
+    scalar fT[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+    auto integrate = [&](const crossingEdge& e)
+    {
+        integrateEdge(solid, e, tg, p, mu, dt, f, fT, any);
+    };
+    forEachCrossingEdge(solid, c, tg, integrate);
     if (any)
     {
         for (label i = 0; i < 3; ++i)
         {
-            f[3*t + i].x() += fT[i][0];
-            f[3*t + i].y() += fT[i][1];
+            f[3*tg.t + i].x() += fT[i][0];
+            f[3*tg.t + i].y() += fT[i][1];
         }
     }
     return any;
+}
+
+
+void Foam::contactLaws::potential::integrateEdge
+(
+    const femdemSolid& solid,
+    const crossingEdge& e,
+    const targetGeometry& tg,
+    const scalar p,
+    const scalar mu,
+    const scalar dt,
+    UList<vector2D>& f,
+    scalar fT[3][2],
+    bool& any
+) const
+{
+    const label nA = e.nA, nB = e.nB;
+    const scalar dx = e.dx, dy = e.dy, len2 = e.len2;
+    const scalar* l0 = e.l0;
+    const scalar* dl = e.dl;
+    const scalar s0 = e.s0, s1 = e.s1;
+    const vector2D* v = solid.v().cdata();
+    const scalar* invM = solid.invMass().cdata();
+    const label t = tg.t;
+    // The length only for an edge that crosses the target
+    const scalar len = std::sqrt(len2);
+
+    // Break points where the minimum changes branch
+    scalar sb[6];
+    label nb = 0;
+    sb[nb++] = s0;
+    for (label i = 0; i < 3; ++i)
+    {
+        const label j = (i + 1) % 3;
+        const scalar dd = dl[i] - dl[j];
+        const scalar num = l0[j] - l0[i];
+        // Divide only when r = num/dd may lie in (s0, s1)
+        const bool maybe =
+            dd > 0 ? (num > s0*dd && num < s1*dd)
+          : dd < 0 ? (num < s0*dd && num > s1*dd)
+          : false;
+        if (maybe)
+        {
+            const scalar r = num/dd;
+            if (r > s0 && r < s1) sb[nb++] = r;
+        }
+    }
+    sb[nb++] = s1;
+    // Insertion sort of the (at most 3) interior break points
+    for (label i = 2; i < nb - 1; ++i)
+    {
+        const scalar key = sb[i];
+        label m = i - 1;
+        while (m >= 1 && sb[m] > key) { sb[m + 1] = sb[m]; --m; }
+        sb[m + 1] = key;
+    }
+
+    // Outward normal and tangent of the contactor edge
+    const scalar iLen = 1/len;
+    const scalar tx = dx*iLen, ty = dy*iLen;
+    const scalar nx = ty, ny = -tx;
+    const vector2D& vA = v[nA];
+    const vector2D& vB = v[nB];
+    const label t0 = 3*t;
+
+    // Friction regularisation from the lightest node involved
+    scalar eta = 0;
+    if (mu > 0)
+    {
+        const scalar invMMax =
+            max(max(invM[nA], invM[nB]), tg.invMMax);
+        eta = frictionFactor_/(invMMax*len*dt);
+    }
+
+    // Barycentric coordinates and potential at the break points: phi
+    // and the shape functions are linear on each piece, so the
+    // integrals of phi N are exact from the end values
+    scalar lam[6][3], phi[6];
+    for (label k = 0; k < nb; ++k)
+    {
+        for (label i = 0; i < 3; ++i)
+        {
+            lam[k][i] = max(l0[i] + sb[k]*dl[i], scalar(0));
+        }
+        phi[k] = 3*min(lam[k][0], min(lam[k][1], lam[k][2]));
+    }
+
+    scalar fAx = 0, fAy = 0, fBx = 0, fBy = 0;
+    for (label q = 0; q + 1 < nb; ++q)
+    {
+        const scalar sa = sb[q], sc = sb[q + 1];
+        const scalar pa = phi[q], pc = phi[q + 1];
+        if (pa <= 0 && pc <= 0) continue;
+        const scalar ell = (sc - sa)*len;
+
+        // int phi L over the piece for L linear: ell/6 (2 pa La +
+        // pa Lc + pc La + 2 pc Lc)
+        auto integral = [&](const scalar La, const scalar Lc)
+        {
+            return ell/6*(2*pa*La + pa*Lc + pc*La + 2*pc*Lc);
+        };
+        const scalar IA = integral(1 - sa, 1 - sc);
+        const scalar IB = integral(sa, sc);
+        const scalar I = IA + IB;
+        if (I <= 0) continue;
+        scalar IT[3];
+        for (label i = 0; i < 3; ++i)
+        {
+            IT[i] = integral(lam[q][i], lam[q + 1][i]);
+        }
+        const scalar ITsum = IT[0] + IT[1] + IT[2];
+
+        // Friction of the piece at its middle point M: tangential force
+        // -min(mu p int phi, eta |v_t| l) sign(v_t), applied at M (edge
+        // shape functions / barycentric coordinates of M)
+        if (eta > 0)
+        {
+            const scalar sm = 0.5*(sa + sc);
+            const scalar vcx = (1 - sm)*vA.x() + sm*vB.x();
+            const scalar vcy = (1 - sm)*vA.y() + sm*vB.y();
+            scalar li[3], vtx = 0, vty = 0;
+            for (label i = 0; i < 3; ++i)
+            {
+                li[i] = 0.5*(lam[q][i] + lam[q + 1][i]);
+                vtx += li[i]*v[t0 + i].x();
+                vty += li[i]*v[t0 + i].y();
+            }
+            const scalar vt = (vcx - vtx)*tx + (vcy - vty)*ty;
+            scalar ft = min(mu*p*I, eta*mag(vt)*ell);
+            if (vt > 0) ft = -ft;
+            const scalar Gx = ft*tx, Gy = ft*ty;
+            fAx += (1 - sm)*Gx; fAy += (1 - sm)*Gy;
+            fBx += sm*Gx; fBy += sm*Gy;
+            const scalar iL = 1/(li[0] + li[1] + li[2]);
+            for (label i = 0; i < 3; ++i)
+            {
+                fT[i][0] -= li[i]*iL*Gx;
+                fT[i][1] -= li[i]*iL*Gy;
+            }
+        }
+
+        // Normal force F = -p I n_c on the contactor (int phi n), split
+        // in the ratios IA/I, IB/I (contactor: F IA/I = -p IA n) and
+        // IT/ITsum (target; ITsum = I but for round-off)
+        const scalar pnx = -p*nx, pny = -p*ny;
+        fAx += IA*pnx; fAy += IA*pny;
+        fBx += IB*pnx; fBy += IB*pny;
+        const scalar r = I/ITsum;
+        for (label i = 0; i < 3; ++i)
+        {
+            const scalar wi = IT[i]*r;
+            fT[i][0] -= wi*pnx;
+            fT[i][1] -= wi*pny;
+        }
+        any = true;
+    }
+    f[nA].x() += fAx;
+    f[nA].y() += fAy;
+    f[nB].x() += fBx;
+    f[nB].y() += fBy;
 }
 
 
@@ -641,6 +1015,37 @@ void Foam::contactLaws::potential::addForces
         buildList(solid);
     }
 
+#ifdef FEMDEM_CONTACT_LANES
+    if (femdemSolid::vectorCode() == femdemSolid::AVX512)
+    {
+        addForcesLanes(solid, f, dt);
+        return;
+    }
+#endif
+    auto narrowPhase = [&]
+    (
+        const targetGeometry& ga,
+        const targetGeometry& gb,
+        const scalar p,
+        const scalar mu
+    )
+    {
+        const bool f1 = contactorTarget(solid, ga.t, gb, p, mu, dt, f);
+        const bool f2 = contactorTarget(solid, gb.t, ga, p, mu, dt, f);
+        if (f1 || f2) ++nActive_;
+    };
+    forEachContactPair(solid, narrowPhase);
+}
+
+
+template<class Visitor>
+void Foam::contactLaws::potential::forEachContactPair
+(
+    const femdemSolid& solid,
+    Visitor& visit
+)
+{
+    const label nA = active_.size();
     const vector2D* x = solid.x().cdata();
     const scalar* invM = solid.invMass().cdata();
     const label* mat = solid.triangleMaterial().cdata();
@@ -654,7 +1059,9 @@ void Foam::contactLaws::potential::addForces
 
     // Rows in the order of the lower triangle, partners ascending: the
     // order of the forces does not depend on the build
-    targetGeometry ga, gb;
+    // (value-initialised: GCC cannot see that setShape always runs before
+    // a visit)
+    targetGeometry ga{}, gb{};
     for (label a = 0; a < nA; ++a)
     {
         const label end = pairStart_[a + 1];
@@ -679,12 +1086,229 @@ void Foam::contactLaws::potential::addForces
             ++nCandidates_;
             const scalar p = max(penalty_[mat[ta]], penalty_[mat[tb]]);
             const scalar mu = min(friction_[mat[ta]], friction_[mat[tb]]);
-            const bool f1 = contactorTarget(solid, ta, gb, p, mu, dt, f);
-            const bool f2 = contactorTarget(solid, tb, ga, p, mu, dt, f);
-            if (f1 || f2) ++nActive_;
+            visit(ga, gb, p, mu);
         }
     }
 }
+
+
+#ifdef FEMDEM_CONTACT_LANES
+void Foam::contactLaws::potential::addForcesLanes
+(
+    const femdemSolid& solid,
+    UList<vector2D>& f,
+    const scalar dt
+)
+{
+    // Blocks of calls (both calls of each pair, contactor the lower
+    // triangle first): their edge tests 8 calls at a time (testCallsV4),
+    // the edges that cross their targets gathered in the calls' order and
+    // integrated 8 at a time (integrateEdgesV4), then their forces added
+    // call by call in the pairs' order, as contactorTarget adds them
+    const vector2D* x = solid.x().cdata();
+    const vector2D* v = solid.v().cdata();
+    const scalar* invM = solid.invMass().cdata();
+    const List<unsigned char>& freeEdges = solid.freeEdges();
+    callLanes C;
+    edgeLanes L;
+    static_assert(edgeLanes::size >= 3*callLanes::size, "edge lanes");
+    // (of each call's target: the triangle and its largest inverse mass)
+    label target[callLanes::size];
+    scalar targetInvMMax[callLanes::size];
+    label contactor[callLanes::size];
+    label firstEdge[callLanes::size + 1];
+    label edgeNodes[edgeLanes::size][2];
+    label nCalls = 0;
+
+    // Lane j: contactor c against target tg
+    auto setCall = [&](const label j, const label c, const targetGeometry& tg)
+    {
+        contactor[j] = c;
+        target[j] = tg.t;
+        targetInvMMax[j] = tg.invMMax;
+        for (label k = 0; k < 3; ++k)
+        {
+            C.cx[2*k][j] = x[3*c + k].x();
+            C.cx[2*k + 1][j] = x[3*c + k].y();
+            C.valid[k][j] = (freeEdges[c] & (1u << k)) && tg.A2 > 0 ? 1 : 0;
+            const vector2D& a = *tg.T[k == 2 ? 0 : k + 1];
+            C.ax[k][j] = a.x();
+            C.ay[k][j] = a.y();
+            C.ex[k][j] = tg.ex[k];
+            C.ey[k][j] = tg.ey[k];
+        }
+        for (label m = 0; m < 4; ++m) C.box[m][j] = tg.box[m];
+        C.iA2[j] = tg.iA2;
+    };
+
+    scalar penalty[callLanes::size], friction[callLanes::size];
+
+    auto flush = [&]()
+    {
+        // Pad the calls to a multiple of 8 (no valid edge)
+        const label nc = (nCalls + 7)/8*8;
+        for (label j = nCalls; j < nc; ++j)
+        {
+            for (label m = 0; m < 6; ++m) C.cx[m][j] = C.cx[m][0];
+            for (label m = 0; m < 4; ++m) C.box[m][j] = C.box[m][0];
+            for (label k = 0; k < 3; ++k)
+            {
+                C.ax[k][j] = C.ax[k][0];
+                C.ay[k][j] = C.ay[k][0];
+                C.ex[k][j] = C.ex[k][0];
+                C.ey[k][j] = C.ey[k][0];
+                C.valid[k][j] = 0;
+            }
+            C.iA2[j] = C.iA2[0];
+        }
+        testCallsV4(&C, nc);
+
+        // The crossing edges, call by call, edge by edge
+        label nEdges = 0;
+        for (label j = 0; j < nCalls; ++j)
+        {
+            firstEdge[j] = nEdges;
+            const label c = contactor[j], t0 = 3*target[j];
+            const scalar mu = friction[j];
+            for (label k = 0; k < 3; ++k)
+            {
+                if (!(C.crosses[k][j] > 0)) continue;
+                const label e = nEdges++;
+                const label nA = 3*c + k, nB = 3*c + (k == 2 ? 0 : k + 1);
+                edgeNodes[e][0] = nA;
+                edgeNodes[e][1] = nB;
+                // (integrateEdge's length and friction regularisation)
+                const scalar len = std::sqrt(C.len2[k][j]);
+                scalar eta = 0;
+                if (mu > 0)
+                {
+                    const scalar invMMax =
+                        max(max(invM[nA], invM[nB]), targetInvMMax[j]);
+                    eta = frictionFactor_/(invMMax*len*dt);
+                }
+                L.len[e] = len;
+                L.dx[e] = C.dx[k][j];
+                L.dy[e] = C.dy[k][j];
+                for (label i = 0; i < 3; ++i)
+                {
+                    L.l0[i][e] = C.l0[k][i][j];
+                    L.dl[i][e] = C.dl[k][i][j];
+                    L.vT[2*i][e] = v[t0 + i].x();
+                    L.vT[2*i + 1][e] = v[t0 + i].y();
+                }
+                L.s0[e] = C.s0[k][j];
+                L.s1[e] = C.s1[k][j];
+                L.vA[0][e] = v[nA].x();
+                L.vA[1][e] = v[nA].y();
+                L.vB[0][e] = v[nB].x();
+                L.vB[1][e] = v[nB].y();
+                L.p[e] = penalty[j];
+                L.mu[e] = mu;
+                L.eta[e] = eta;
+            }
+        }
+        firstEdge[nCalls] = nEdges;
+
+        // Pad the edges to a multiple of 8 with the last (unused results)
+        const label ne = (nEdges + 7)/8*8;
+        for (label e = nEdges; e < ne; ++e)
+        {
+            const label l = nEdges - 1;
+            L.len[e] = L.len[l];
+            L.dx[e] = L.dx[l];
+            L.dy[e] = L.dy[l];
+            for (label i = 0; i < 3; ++i)
+            {
+                L.l0[i][e] = L.l0[i][l];
+                L.dl[i][e] = L.dl[i][l];
+            }
+            L.s0[e] = L.s0[l];
+            L.s1[e] = L.s1[l];
+            for (label i = 0; i < 2; ++i)
+            {
+                L.vA[i][e] = L.vA[i][l];
+                L.vB[i][e] = L.vB[i][l];
+            }
+            for (label i = 0; i < 6; ++i) L.vT[i][e] = L.vT[i][l];
+            L.p[e] = L.p[l];
+            L.mu[e] = L.mu[l];
+            L.eta[e] = L.eta[l];
+        }
+        if (ne) integrateEdgesV4(&L, ne);
+
+        for (label call = 0; call < nCalls; call += 2)
+        {
+            bool active = false;
+            for (label j = call; j <= call + 1; ++j)
+            {
+                bool any = false;
+                scalar fT[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+                for (label e = firstEdge[j]; e < firstEdge[j + 1]; ++e)
+                {
+                    for (label q = 0; q < 4; ++q)
+                    {
+                        if (L.friction[q][e] > 0)
+                        {
+                            for (label i = 0; i < 3; ++i)
+                            {
+                                fT[i][0] -= L.tf[q][2*i][e];
+                                fT[i][1] -= L.tf[q][2*i + 1][e];
+                            }
+                        }
+                        if (L.normal[q][e] > 0)
+                        {
+                            for (label i = 0; i < 3; ++i)
+                            {
+                                fT[i][0] -= L.tn[q][2*i][e];
+                                fT[i][1] -= L.tn[q][2*i + 1][e];
+                            }
+                            any = true;
+                        }
+                    }
+                    const label nA = edgeNodes[e][0], nB = edgeNodes[e][1];
+                    f[nA].x() += L.fA[0][e];
+                    f[nA].y() += L.fA[1][e];
+                    f[nB].x() += L.fB[0][e];
+                    f[nB].y() += L.fB[1][e];
+                }
+                if (any)
+                {
+                    const label t = target[j];
+                    for (label i = 0; i < 3; ++i)
+                    {
+                        f[3*t + i].x() += fT[i][0];
+                        f[3*t + i].y() += fT[i][1];
+                    }
+                }
+                active = active || any;
+            }
+            if (active) ++nActive_;
+        }
+        nCalls = 0;
+    };
+
+    auto collect = [&]
+    (
+        const targetGeometry& ga,
+        const targetGeometry& gb,
+        const scalar p,
+        const scalar mu
+    )
+    {
+        for (label j = nCalls; j <= nCalls + 1; ++j)
+        {
+            penalty[j] = p;
+            friction[j] = mu;
+        }
+        setCall(nCalls, ga.t, gb);
+        setCall(nCalls + 1, gb.t, ga);
+        nCalls += 2;
+        if (nCalls == callLanes::size) flush();
+    };
+    forEachContactPair(solid, collect);
+    if (nCalls) flush();
+}
+#endif
 
 
 void Foam::contactLaws::potential::addPairCounts(UList<label>& count) const
