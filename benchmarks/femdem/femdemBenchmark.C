@@ -26,8 +26,9 @@ Usage
     cases: the letters of the cases to run, i intact, b blocky, f
     fragmented (default ibf; e.g. f for a profile of the fragmented case);
     skin: potentialCoeffs.skin (default: the contact law's)
-    Where the CPU has AVX-512, the intact case without contact also runs
-    with the triangle loop's scalar code: the same hash, its own rate.
+    Where the CPU has AVX-512 (the triangle, joint and contact loops in
+    lanes), the intact case without contact and the fragmented case also run
+    with the scalar loops: the same hashes, their own rates.
 
 \*---------------------------------------------------------------------------*/
 
@@ -166,7 +167,7 @@ std::string codeName(const label code)
     return
         code == femdemSolid::AVX512
       ? "x86-64-v4 (AVX-512), blocks of lanes"
-      : "baseline x86-64, scalar loop";
+      : "baseline x86-64, scalar loops";
 }
 
 
@@ -186,7 +187,7 @@ int main(int argc, char *argv[])
     };
     std::printf
     (
-        ">> triangle loop: %s code (the CPU's best: %s)\n",
+        ">> element, joint and contact loops: %s (the CPU's best: %s)\n",
         codeName(femdemSolid::vectorCode()).c_str(),
         codeName(femdemSolid::cpuVectorCode()).c_str()
     );
@@ -200,8 +201,8 @@ int main(int argc, char *argv[])
         );
         femdemSolid noContact(mesh, props("none"));
         run("intact, contactLaw none", noContact, steps);
-        // The triangle loop's other codes on the same case: the same hash
-        // (bitwise the same forces), their own rates
+        // The other codes on the same case: the same hash (bitwise the same
+        // forces), their own rates
         const femdemSolid::vectorCodeType best = femdemSolid::vectorCode();
         for (label code = best - 1; code >= 0; --code)
         {
@@ -209,7 +210,7 @@ int main(int argc, char *argv[])
             femdemSolid other(mesh, props("none"));
             run
             (
-                "intact, contactLaw none, triangle code " + codeName(code),
+                "intact, contactLaw none, code " + codeName(code),
                 other,
                 steps
             );
@@ -268,9 +269,12 @@ int main(int argc, char *argv[])
         );
     }
 
-    // Fragmented: all joints broken, random velocities, pressed
-    if (runs('f'))
+    // Fragmented: all joints broken, random velocities, pressed; where the
+    // CPU has AVX-512 also with the scalar code (the same hash)
+    const femdemSolid::vectorCodeType best = femdemSolid::vectorCode();
+    for (label code = best; code >= 0 && runs('f'); --code)
     {
+        femdemSolid::setVectorCode(femdemSolid::vectorCodeType(code));
         const triangleMesh mesh = triangleMesh::rectangle
         (
             vector2D(0, 0), vector2D(0.2, 0.2), fx, fy, "rock"
@@ -285,8 +289,16 @@ int main(int argc, char *argv[])
         }
         // Let the fragments come into contact
         for (label i = 0; i < 50; ++i) solid.step();
-        run("fragmented, contactLaw potential", solid, fsteps);
+        run
+        (
+            code == best
+          ? "fragmented, contactLaw potential"
+          : "fragmented, contactLaw potential, code " + codeName(code),
+            solid,
+            fsteps
+        );
     }
+    femdemSolid::setVectorCode(best);
     return 0;
 }
 

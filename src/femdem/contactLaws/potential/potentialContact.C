@@ -127,13 +127,18 @@ inline void fit(Foam::DynamicList<T>& l, const Foam::label n)
 struct edgeLanes
 {
     static constexpr Foam::label size = 96;     // a multiple of 8
-    double len[size], dx[size], dy[size];
+    double len2[size], dx[size], dy[size];
     double l0[3][size], dl[3][size], s0[size], s1[size];
     double vA[2][size], vB[2][size], vT[6][size];
-    double p[size], mu[size], eta[size];
+    double p[size], mu[size];
+    //- The largest inverse mass of the edge's nodes and the target's
+    double invMMax[size];
     double fA[2][size], fB[2][size];
     double friction[4][size], normal[4][size];
     double tf[4][6][size], tn[4][6][size];
+    //- The target's terms summed over the pieces from 0 (the sum a call
+    //  with this edge alone adds), and whether any piece had a force
+    double fT[6][size], any[size];
 };
 
 
@@ -149,6 +154,7 @@ struct edgeLanes
 // own: its bug 105593)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
 
 // The operations of the lanes (x86-64-v4 code; a lambda inside the target
 // function would not take its target)
@@ -200,7 +206,9 @@ FEMDEM_V4_INLINE V integral
 __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
 (
     edgeLanes* __restrict Lp,
-    const Foam::label n
+    const Foam::label n,
+    const double frictionFactor,
+    const double dt
 )
 {
     edgeLanes& L = *Lp;
@@ -211,7 +219,8 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
 
     for (Foam::label j = 0; j < n; j += 8)
     {
-        const V len = ld(L.len + j), dx = ld(L.dx + j), dy = ld(L.dy + j);
+        const V len = _mm512_sqrt_pd(ld(L.len2 + j));
+        const V dx = ld(L.dx + j), dy = ld(L.dy + j);
         const V s0 = ld(L.s0 + j), s1 = ld(L.s1 + j);
         V l0[3], dl[3];
         for (int i = 0; i < 3; ++i)
@@ -249,7 +258,16 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
         const V vBx = ld(L.vB[0] + j), vBy = ld(L.vB[1] + j);
         V vT[6];
         for (int i = 0; i < 6; ++i) vT[i] = ld(L.vT[i] + j);
-        const V p = ld(L.p + j), mu = ld(L.mu + j), eta = ld(L.eta + j);
+        const V p = ld(L.p + j), mu = ld(L.mu + j);
+        // Friction regularisation eta = f/(invMMax len dt), mu > 0
+        const V eta = _mm512_mask_div_pd
+        (
+            zero, gt(mu, zero), _mm512_set1_pd(frictionFactor),
+            mul(mul(ld(L.invMMax + j), len), _mm512_set1_pd(dt))
+        );
+        V fT[6];
+        for (int i = 0; i < 6; ++i) fT[i] = zero;
+        M any = 0;
         const M damped = gt(eta, zero);
 
         V lam[5][3], phi[5];
@@ -308,8 +326,12 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
             for (int i = 0; i < 3; ++i)
             {
                 const V w = mul(li[i], iL);
-                _mm512_storeu_pd(L.tf[q][2*i] + j, mul(w, Gx));
-                _mm512_storeu_pd(L.tf[q][2*i + 1] + j, mul(w, Gy));
+                const V tfx = mul(w, Gx), tfy = mul(w, Gy);
+                _mm512_storeu_pd(L.tf[q][2*i] + j, tfx);
+                _mm512_storeu_pd(L.tf[q][2*i + 1] + j, tfy);
+                fT[2*i] = _mm512_mask_sub_pd(fT[2*i], fric, fT[2*i], tfx);
+                fT[2*i + 1] =
+                    _mm512_mask_sub_pd(fT[2*i + 1], fric, fT[2*i + 1], tfy);
             }
 
             // Normal force
@@ -322,9 +344,14 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
             for (int i = 0; i < 3; ++i)
             {
                 const V wi = mul(IT[i], rr);
-                _mm512_storeu_pd(L.tn[q][2*i] + j, mul(wi, pnx));
-                _mm512_storeu_pd(L.tn[q][2*i + 1] + j, mul(wi, pny));
+                const V tnx = mul(wi, pnx), tny = mul(wi, pny);
+                _mm512_storeu_pd(L.tn[q][2*i] + j, tnx);
+                _mm512_storeu_pd(L.tn[q][2*i + 1] + j, tny);
+                fT[2*i] = _mm512_mask_sub_pd(fT[2*i], applied, fT[2*i], tnx);
+                fT[2*i + 1] =
+                    _mm512_mask_sub_pd(fT[2*i + 1], applied, fT[2*i + 1], tny);
             }
+            any |= applied;
             _mm512_storeu_pd
             (
                 L.friction[q] + j, _mm512_mask_blend_pd(fric, zero, one)
@@ -334,6 +361,8 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
                 L.normal[q] + j, _mm512_mask_blend_pd(applied, zero, one)
             );
         }
+        for (int i = 0; i < 6; ++i) _mm512_storeu_pd(L.fT[i] + j, fT[i]);
+        _mm512_storeu_pd(L.any + j, _mm512_mask_blend_pd(any, zero, one));
         _mm512_storeu_pd(L.fA[0] + j, fAx);
         _mm512_storeu_pd(L.fA[1] + j, fAy);
         _mm512_storeu_pd(L.fB[0] + j, fBx);
@@ -436,6 +465,51 @@ __attribute__((target("arch=x86-64-v4"))) void testCallsV4
             );
         }
     }
+}
+
+//- Which of the n (<= 8) triangles tb = partner[0 .. n) have a box that
+//  overlaps box (the broad phase's test of forEachContactPair, the same
+//  comparisons of the same minima and maxima), leaving out halo partners
+//  of a halo row (share: the node shares, null if not partitioned)
+__attribute__((target("arch=x86-64-v4"))) unsigned overlapMaskV4
+(
+    const double* x,
+    const double* share,
+    const bool haloRow,
+    const double box[4],
+    const Foam::label* partner,
+    const Foam::label n
+)
+{
+    const M lanes = M((1u << n) - 1);
+    const __m256i tb = _mm256_maskz_loadu_epi32(lanes, partner);
+    const __m256i i6 = _mm256_mullo_epi32(tb, _mm256_set1_epi32(6));
+    V c[6];
+    for (int k = 0; k < 6; ++k)
+    {
+        c[k] = _mm512_mask_i32gather_pd
+        (
+            _mm512_setzero_pd(), lanes,
+            _mm256_add_epi32(i6, _mm256_set1_epi32(k)), x, 8
+        );
+    }
+    // (the operand order of setBox: min(T0, min(T1, T2)))
+    const V xmin = mn(c[0], mn(c[2], c[4])), xmax = mx(c[0], mx(c[2], c[4]));
+    const V ymin = mn(c[1], mn(c[3], c[5])), ymax = mx(c[1], mx(c[3], c[5]));
+    const M apart =
+        lt(_mm512_set1_pd(box[2]), xmin) | lt(xmax, _mm512_set1_pd(box[0]))
+      | lt(_mm512_set1_pd(box[3]), ymin) | lt(ymax, _mm512_set1_pd(box[1]));
+    M keep = M(lanes & ~apart);
+    if (share && haloRow)
+    {
+        const __m256i i3 = _mm256_mullo_epi32(tb, _mm256_set1_epi32(3));
+        const V sh = _mm512_mask_i32gather_pd
+        (
+            _mm512_setzero_pd(), lanes, i3, share, 8
+        );
+        keep = M(keep & ~_mm512_cmp_pd_mask(sh, _mm512_setzero_pd(), _CMP_EQ_OQ));
+    }
+    return keep;
 }
 
 #pragma GCC diagnostic pop
@@ -1034,11 +1108,11 @@ void Foam::contactLaws::potential::addForces
         const bool f2 = contactorTarget(solid, gb.t, ga, p, mu, dt, f);
         if (f1 || f2) ++nActive_;
     };
-    forEachContactPair(solid, narrowPhase);
+    forEachContactPair<decltype(narrowPhase), false>(solid, narrowPhase);
 }
 
 
-template<class Visitor>
+template<class Visitor, bool Prefilter>
 void Foam::contactLaws::potential::forEachContactPair
 (
     const femdemSolid& solid,
@@ -1071,12 +1145,8 @@ void Foam::contactLaws::potential::forEachContactPair
         const bool haloA = share && share[3*ta] == 0;
         ga.setBox(x, ta);
         bool gaShape = false;
-        for (; k < end; ++k)
+        auto pair = [&](const label tb)
         {
-            const label tb = partner_[k];
-            if (haloA && share[3*tb] == 0) continue;
-            gb.setBox(x, tb);
-            if (!ga.overlaps(gb)) continue;
             if (!gaShape)
             {
                 ga.setShape(invM);
@@ -1087,6 +1157,37 @@ void Foam::contactLaws::potential::forEachContactPair
             const scalar p = max(penalty_[mat[ta]], penalty_[mat[tb]]);
             const scalar mu = min(friction_[mat[ta]], friction_[mat[tb]]);
             visit(ga, gb, p, mu);
+        };
+#ifdef FEMDEM_CONTACT_LANES
+        if (Prefilter)
+        {
+            // The box tests 8 partners at a time: the pairs that overlap
+            // in the list's order
+            for (; k < end; k += 8)
+            {
+                unsigned m = overlapMaskV4
+                (
+                    &x[0].x(), share, haloA, ga.box, partner_.cdata() + k,
+                    min(label(8), end - k)
+                );
+                while (m)
+                {
+                    const label tb = partner_[k + __builtin_ctz(m)];
+                    m &= m - 1;
+                    gb.setBox(x, tb);
+                    pair(tb);
+                }
+            }
+            continue;
+        }
+#endif
+        for (; k < end; ++k)
+        {
+            const label tb = partner_[k];
+            if (haloA && share[3*tb] == 0) continue;
+            gb.setBox(x, tb);
+            if (!ga.overlaps(gb)) continue;
+            pair(tb);
         }
     }
 }
@@ -1177,16 +1278,8 @@ void Foam::contactLaws::potential::addForcesLanes
                 const label nA = 3*c + k, nB = 3*c + (k == 2 ? 0 : k + 1);
                 edgeNodes[e][0] = nA;
                 edgeNodes[e][1] = nB;
-                // (integrateEdge's length and friction regularisation)
-                const scalar len = std::sqrt(C.len2[k][j]);
-                scalar eta = 0;
-                if (mu > 0)
-                {
-                    const scalar invMMax =
-                        max(max(invM[nA], invM[nB]), targetInvMMax[j]);
-                    eta = frictionFactor_/(invMMax*len*dt);
-                }
-                L.len[e] = len;
+                L.invMMax[e] = max(max(invM[nA], invM[nB]), targetInvMMax[j]);
+                L.len2[e] = C.len2[k][j];
                 L.dx[e] = C.dx[k][j];
                 L.dy[e] = C.dy[k][j];
                 for (label i = 0; i < 3; ++i)
@@ -1204,7 +1297,6 @@ void Foam::contactLaws::potential::addForcesLanes
                 L.vB[1][e] = v[nB].y();
                 L.p[e] = penalty[j];
                 L.mu[e] = mu;
-                L.eta[e] = eta;
             }
         }
         firstEdge[nCalls] = nEdges;
@@ -1214,7 +1306,7 @@ void Foam::contactLaws::potential::addForcesLanes
         for (label e = nEdges; e < ne; ++e)
         {
             const label l = nEdges - 1;
-            L.len[e] = L.len[l];
+            L.len2[e] = L.len2[l];
             L.dx[e] = L.dx[l];
             L.dy[e] = L.dy[l];
             for (label i = 0; i < 3; ++i)
@@ -1232,9 +1324,9 @@ void Foam::contactLaws::potential::addForcesLanes
             for (label i = 0; i < 6; ++i) L.vT[i][e] = L.vT[i][l];
             L.p[e] = L.p[l];
             L.mu[e] = L.mu[l];
-            L.eta[e] = L.eta[l];
+            L.invMMax[e] = L.invMMax[l];
         }
-        if (ne) integrateEdgesV4(&L, ne);
+        if (ne) integrateEdgesV4(&L, ne, frictionFactor_, dt);
 
         for (label call = 0; call < nCalls; call += 2)
         {
@@ -1243,9 +1335,21 @@ void Foam::contactLaws::potential::addForcesLanes
             {
                 bool any = false;
                 scalar fT[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+                // One crossing edge: its lane's sum is the call's
+                const bool alone = firstEdge[j + 1] - firstEdge[j] == 1;
+                if (alone)
+                {
+                    const label e = firstEdge[j];
+                    for (label i = 0; i < 3; ++i)
+                    {
+                        fT[i][0] = L.fT[2*i][e];
+                        fT[i][1] = L.fT[2*i + 1][e];
+                    }
+                    any = L.any[e] > 0;
+                }
                 for (label e = firstEdge[j]; e < firstEdge[j + 1]; ++e)
                 {
-                    for (label q = 0; q < 4; ++q)
+                    for (label q = 0; q < 4 && !alone; ++q)
                     {
                         if (L.friction[q][e] > 0)
                         {
@@ -1305,7 +1409,7 @@ void Foam::contactLaws::potential::addForcesLanes
         nCalls += 2;
         if (nCalls == callLanes::size) flush();
     };
-    forEachContactPair(solid, collect);
+    forEachContactPair<decltype(collect), true>(solid, collect);
     if (nCalls) flush();
 }
 #endif
