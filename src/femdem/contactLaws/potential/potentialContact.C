@@ -120,19 +120,40 @@ inline void fit(Foam::DynamicList<T>& l, const Foam::label n)
 #if defined(__x86_64__) && defined(__GNUC__)
 #define FEMDEM_CONTACT_LANES 1
 
+//- A block of contactor-target calls as lanes: the inputs of the edge
+//  tests of forEachCrossingEdge and, per edge k of the contactor, their
+//  results
+struct callLanes
+{
+    static constexpr Foam::label size = 32;     // a multiple of 8
+    //- The contactor's nodes 0, 1, 2: x, y
+    double cx[6][size];
+    //- The target's box (xmin, ymin, xmax, ymax), the point of its edge i
+    //  (vertex (i + 1) % 3), its edge vectors and 1/(2 A)
+    double box[4][size];
+    double ax[3][size], ay[3][size], ex[3][size], ey[3][size];
+    double iA2[size];
+    //- 1 where edge k is free and the target's area positive
+    double valid[3][size];
+    //- Per edge k: lambda_i = l0 + s dl, the clipped range, the edge
+    //  vector and its squared length, 1 where it crosses the target
+    double l0[3][3][size], dl[3][3][size], s0[3][size], s1[3][size];
+    double dx[3][size], dy[3][size], len2[3][size], crosses[3][size];
+};
+
+
 //- The contactor edges that cross their targets, as lanes (structure of
-//  arrays): the inputs of integrateEdge, and per piece of the edge (at most
-//  4) the target's force terms, in the order integrateEdge subtracts them,
-//  and whether its friction and normal force were applied
+//  arrays): where the inputs of integrateEdge are (gathered), and per piece
+//  of the edge (at most 4) the target's force terms, in the order
+//  integrateEdge subtracts them, and whether its friction and normal force
+//  were applied
 struct edgeLanes
 {
     static constexpr Foam::label size = 96;     // a multiple of 8
-    double len2[size], dx[size], dy[size];
-    double l0[3][size], dl[3][size], s0[size], s1[size];
-    double vA[2][size], vB[2][size], vT[6][size];
-    double p[size], mu[size];
-    //- The largest inverse mass of the edge's nodes and the target's
-    double invMMax[size];
+    //- Where each edge's data are: its call j, its results in the call
+    //  lanes (k size + j, and 3 k size + j for l0 and dl), its nodes nA, nB
+    //  and its target's first node
+    int call[size], kj[size], k3j[size], nA[size], nB[size], t0[size];
     double fA[2][size], fB[2][size];
     double friction[4][size], normal[4][size];
     double tf[4][6][size], tn[4][6][size];
@@ -163,6 +184,14 @@ struct edgeLanes
 typedef __m512d V;
 typedef __mmask8 M;
 FEMDEM_V4_INLINE V ld(const double* p) { return _mm512_loadu_pd(p); }
+FEMDEM_V4_INLINE __m256i ldi(const int* p)
+{
+    return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p));
+}
+FEMDEM_V4_INLINE V gather(const __m256i i, const double* base)
+{
+    return _mm512_i32gather_pd(i, base, 8);
+}
 FEMDEM_V4_INLINE V neg(const V x)
 {
     // (the sign flipped, as unary minus; 0 - x would give +0 for +0)
@@ -206,12 +235,19 @@ FEMDEM_V4_INLINE V integral
 __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
 (
     edgeLanes* __restrict Lp,
+    const callLanes* __restrict Cp,
+    const double* __restrict v,
+    const double* __restrict invM,
+    const double* __restrict callInvMMax,
+    const double* __restrict penalty,
+    const double* __restrict friction,
     const Foam::label n,
     const double frictionFactor,
     const double dt
 )
 {
     edgeLanes& L = *Lp;
+    const callLanes& C = *Cp;
     const V zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1);
     const V three = _mm512_set1_pd(3);
     const V six = _mm512_set1_pd(6), half = _mm512_set1_pd(0.5);
@@ -219,18 +255,23 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
 
     for (Foam::label j = 0; j < n; j += 8)
     {
-        const V len = _mm512_sqrt_pd(ld(L.len2 + j));
-        const V dx = ld(L.dx + j), dy = ld(L.dy + j);
-        const V s0 = ld(L.s0 + j), s1 = ld(L.s1 + j);
+        const __m256i kj = ldi(L.kj + j), k3j = ldi(L.k3j + j);
+        const __m256i call = ldi(L.call + j);
+        const __m256i nA = ldi(L.nA + j), nB = ldi(L.nB + j);
+        const __m256i t0 = ldi(L.t0 + j);
+        const V len = _mm512_sqrt_pd(gather(kj, C.len2[0]));
+        const V dx = gather(kj, C.dx[0]), dy = gather(kj, C.dy[0]);
+        const V s0 = gather(kj, C.s0[0]), s1 = gather(kj, C.s1[0]);
         V l0[3], dl[3];
         for (int i = 0; i < 3; ++i)
         {
-            l0[i] = ld(L.l0[i] + j);
-            dl[i] = ld(L.dl[i] + j);
+            l0[i] = gather(k3j, C.l0[0][i]);
+            dl[i] = gather(k3j, C.dl[0][i]);
         }
 
         // Break points where the minimum changes branch (+inf: none)
         V r[3];
+        M found[3];
         for (int i = 0; i < 3; ++i)
         {
             const int k = (i + 1) % 3;
@@ -244,7 +285,15 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
             const V q = _mm512_mask_div_pd(inf, maybe, num, dd);
             const M valid = maybe & gt(q, s0) & lt(q, s1);
             r[i] = _mm512_mask_blend_pd(valid, inf, q);
+            found[i] = valid;
         }
+        // Pieces: one more than the most break points of a lane (the
+        // others are empty in every lane)
+        const int nPieces =
+            1 + ((found[0] | found[1] | found[2]) != 0)
+          + (((found[0] & found[1]) | (found[0] & found[2])
+            | (found[1] & found[2])) != 0)
+          + ((found[0] & found[1] & found[2]) != 0);
         // Sorted (network) and capped at s1: the points of the pieces
         const V a = mn(r[0], r[1]), b = mx(r[0], r[1]);
         const V c = mn(b, r[2]), d = mx(b, r[2]);
@@ -254,16 +303,27 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
         const V iLen = _mm512_div_pd(one, len);
         const V tx = mul(dx, iLen), ty = mul(dy, iLen);
         const V nx = ty, ny = neg(tx);
-        const V vAx = ld(L.vA[0] + j), vAy = ld(L.vA[1] + j);
-        const V vBx = ld(L.vB[0] + j), vBy = ld(L.vB[1] + j);
+        const __m256i nA2 = _mm256_slli_epi32(nA, 1);
+        const __m256i nB2 = _mm256_slli_epi32(nB, 1);
+        const V vAx = gather(nA2, v), vAy = gather(nA2, v + 1);
+        const V vBx = gather(nB2, v), vBy = gather(nB2, v + 1);
         V vT[6];
-        for (int i = 0; i < 6; ++i) vT[i] = ld(L.vT[i] + j);
-        const V p = ld(L.p + j), mu = ld(L.mu + j);
-        // Friction regularisation eta = f/(invMMax len dt), mu > 0
+        for (int i = 0; i < 3; ++i)
+        {
+            const __m256i ti =
+                _mm256_slli_epi32(_mm256_add_epi32(t0, _mm256_set1_epi32(i)), 1);
+            vT[2*i] = gather(ti, v);
+            vT[2*i + 1] = gather(ti, v + 1);
+        }
+        const V p = gather(call, penalty), mu = gather(call, friction);
+        // Friction regularisation eta = f/(invMMax len dt), mu > 0, with
+        // invMMax = max(max(invM[nA], invM[nB]), the target's)
+        const V invMMax =
+            mx(mx(gather(nA, invM), gather(nB, invM)), gather(call, callInvMMax));
         const V eta = _mm512_mask_div_pd
         (
             zero, gt(mu, zero), _mm512_set1_pd(frictionFactor),
-            mul(mul(ld(L.invMMax + j), len), _mm512_set1_pd(dt))
+            mul(mul(invMMax, len), _mm512_set1_pd(dt))
         );
         V fT[6];
         for (int i = 0; i < 6; ++i) fT[i] = zero;
@@ -281,7 +341,12 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
         }
 
         V fAx = zero, fAy = zero, fBx = zero, fBy = zero;
-        for (int q = 0; q < 4; ++q)
+        for (int q = nPieces; q < 4; ++q)
+        {
+            _mm512_storeu_pd(L.friction[q] + j, zero);
+            _mm512_storeu_pd(L.normal[q] + j, zero);
+        }
+        for (int q = 0; q < nPieces; ++q)
         {
             const V sa = P[q], sc = P[q + 1];
             const V pa = phi[q], pc = phi[q + 1];
@@ -371,26 +436,6 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
 }
 
 
-//- A block of contactor-target calls as lanes: the inputs of the edge
-//  tests of forEachCrossingEdge and, per edge k of the contactor, their
-//  results
-struct callLanes
-{
-    static constexpr Foam::label size = 32;     // a multiple of 8
-    //- The contactor's nodes 0, 1, 2: x, y
-    double cx[6][size];
-    //- The target's box (xmin, ymin, xmax, ymax), the point of its edge i
-    //  (vertex (i + 1) % 3), its edge vectors and 1/(2 A)
-    double box[4][size];
-    double ax[3][size], ay[3][size], ex[3][size], ey[3][size];
-    double iA2[size];
-    //- 1 where edge k is free and the target's area positive
-    double valid[3][size];
-    //- Per edge k: lambda_i = l0 + s dl, the clipped range, the edge
-    //  vector and its squared length, 1 where it crosses the target
-    double l0[3][3][size], dl[3][3][size], s0[3][size], s1[3][size];
-    double dx[3][size], dy[3][size], len2[3][size], crosses[3][size];
-};
 
 
 //- The edge tests of forEachCrossingEdge for 8 calls at a time, AVX-512
@@ -1218,7 +1263,6 @@ void Foam::contactLaws::potential::addForcesLanes
     scalar targetInvMMax[callLanes::size];
     label contactor[callLanes::size];
     label firstEdge[callLanes::size + 1];
-    label edgeNodes[edgeLanes::size][2];
     label nCalls = 0;
 
     // Lane j: contactor c against target tg
@@ -1264,39 +1308,23 @@ void Foam::contactLaws::potential::addForcesLanes
         }
         testCallsV4(&C, nc);
 
-        // The crossing edges, call by call, edge by edge
+        // The crossing edges, call by call, edge by edge: where their data
+        // are (integrateEdgesV4 gathers them)
         label nEdges = 0;
         for (label j = 0; j < nCalls; ++j)
         {
             firstEdge[j] = nEdges;
-            const label c = contactor[j], t0 = 3*target[j];
-            const scalar mu = friction[j];
+            const label c = contactor[j];
             for (label k = 0; k < 3; ++k)
             {
                 if (!(C.crosses[k][j] > 0)) continue;
                 const label e = nEdges++;
-                const label nA = 3*c + k, nB = 3*c + (k == 2 ? 0 : k + 1);
-                edgeNodes[e][0] = nA;
-                edgeNodes[e][1] = nB;
-                L.invMMax[e] = max(max(invM[nA], invM[nB]), targetInvMMax[j]);
-                L.len2[e] = C.len2[k][j];
-                L.dx[e] = C.dx[k][j];
-                L.dy[e] = C.dy[k][j];
-                for (label i = 0; i < 3; ++i)
-                {
-                    L.l0[i][e] = C.l0[k][i][j];
-                    L.dl[i][e] = C.dl[k][i][j];
-                    L.vT[2*i][e] = v[t0 + i].x();
-                    L.vT[2*i + 1][e] = v[t0 + i].y();
-                }
-                L.s0[e] = C.s0[k][j];
-                L.s1[e] = C.s1[k][j];
-                L.vA[0][e] = v[nA].x();
-                L.vA[1][e] = v[nA].y();
-                L.vB[0][e] = v[nB].x();
-                L.vB[1][e] = v[nB].y();
-                L.p[e] = penalty[j];
-                L.mu[e] = mu;
+                L.call[e] = j;
+                L.kj[e] = k*callLanes::size + j;
+                L.k3j[e] = 3*k*callLanes::size + j;
+                L.nA[e] = 3*c + k;
+                L.nB[e] = 3*c + (k == 2 ? 0 : k + 1);
+                L.t0[e] = 3*target[j];
             }
         }
         firstEdge[nCalls] = nEdges;
@@ -1306,27 +1334,21 @@ void Foam::contactLaws::potential::addForcesLanes
         for (label e = nEdges; e < ne; ++e)
         {
             const label l = nEdges - 1;
-            L.len2[e] = L.len2[l];
-            L.dx[e] = L.dx[l];
-            L.dy[e] = L.dy[l];
-            for (label i = 0; i < 3; ++i)
-            {
-                L.l0[i][e] = L.l0[i][l];
-                L.dl[i][e] = L.dl[i][l];
-            }
-            L.s0[e] = L.s0[l];
-            L.s1[e] = L.s1[l];
-            for (label i = 0; i < 2; ++i)
-            {
-                L.vA[i][e] = L.vA[i][l];
-                L.vB[i][e] = L.vB[i][l];
-            }
-            for (label i = 0; i < 6; ++i) L.vT[i][e] = L.vT[i][l];
-            L.p[e] = L.p[l];
-            L.mu[e] = L.mu[l];
-            L.invMMax[e] = L.invMMax[l];
+            L.call[e] = L.call[l];
+            L.kj[e] = L.kj[l];
+            L.k3j[e] = L.k3j[l];
+            L.nA[e] = L.nA[l];
+            L.nB[e] = L.nB[l];
+            L.t0[e] = L.t0[l];
         }
-        if (ne) integrateEdgesV4(&L, ne, frictionFactor_, dt);
+        if (ne)
+        {
+            integrateEdgesV4
+            (
+                &L, &C, &v[0].x(), invM, targetInvMMax, penalty, friction, ne,
+                frictionFactor_, dt
+            );
+        }
 
         for (label call = 0; call < nCalls; call += 2)
         {
@@ -1369,7 +1391,7 @@ void Foam::contactLaws::potential::addForcesLanes
                             any = true;
                         }
                     }
-                    const label nA = edgeNodes[e][0], nB = edgeNodes[e][1];
+                    const label nA = L.nA[e], nB = L.nB[e];
                     f[nA].x() += L.fA[0][e];
                     f[nA].y() += L.fA[1][e];
                     f[nB].x() += L.fB[0][e];
