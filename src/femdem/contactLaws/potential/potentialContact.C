@@ -569,6 +569,7 @@ Foam::contactLaws::potential::potential(const dictionary& dict)
 :
     contactLaw(dict),
     activeChanges_(-1),
+    meanFreeEdges_(0),
     expired_(-1),
     nCandidates_(0),
     nActive_(0),
@@ -604,7 +605,14 @@ void Foam::contactLaws::potential::setActive(const femdemSolid& solid)
     active_.setCapacity(n);
     active_.setSize(n);
     n = 0;
-    forAll(free, t) if (free[t]) active_[n++] = t;
+    label nFree = 0;
+    forAll(free, t)
+    {
+        if (!free[t]) continue;
+        active_[n++] = t;
+        for (label k = 0; k < 3; ++k) nFree += (free[t] >> k) & 1;
+    }
+    meanFreeEdges_ = n ? scalar(nFree)/n : 0;
     activeChanges_ = solid.freeEdgeChanges();
 
     const List<femdemMaterial>& mats = solid.materials();
@@ -1135,7 +1143,7 @@ void Foam::contactLaws::potential::addForces
     }
 
 #ifdef FEMDEM_CONTACT_LANES
-    if (femdemSolid::vectorCode() == femdemSolid::AVX512)
+    if (femdemSolid::vectorCode() == femdemSolid::AVX512 && meanFreeEdges_ >= 2)
     {
         addForcesLanes(solid, f, dt);
         return;
