@@ -16,6 +16,11 @@ Description
     forces are computed at (no extra pass over the triangles) and sets the
     step used from the next step on.
 
+    The force loop has two forms, bitwise the same forces and step data:
+    the scalar loop (triangleKernel::runScalar) and, where the CPU has
+    AVX-512 (femdemSolid::vectorCode), blocks of 64 triangles as lanes
+    (runLanes, laneArithmeticV4), whose arithmetic GCC vectorises.
+
 \*---------------------------------------------------------------------------*/
 
 #include "femdemSolid.H"
