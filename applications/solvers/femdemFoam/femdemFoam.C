@@ -308,6 +308,8 @@ int main(int argc, char *argv[])
     Info<< "FEMDEM solid: " << mesh.nTriangles() << " triangles, "
         << nJoints << " joints, "
         << localSolid().materials().size() << " material(s)" << nl
+        << "Element, joint and contact loops: "
+        << femdemSolid::vectorCodeName() << nl
         << "Stable time step: " << localSolid().stableTimeStep() << " s ("
         << std::ceil(runTime.deltaTValue()/localSolid().stableTimeStep())
         << " sub-steps per deltaT)" << nl << endl;

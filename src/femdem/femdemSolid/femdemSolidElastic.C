@@ -638,6 +638,18 @@ void Foam::femdemSolid::setVectorCode(const vectorCodeType code)
 }
 
 
+const char* Foam::femdemSolid::vectorCodeName()
+{
+    return
+        vectorCode() == AVX512
+      ? "AVX-512 lanes (bitwise the scalar loops; OptimisationSwitch"
+        " femdemVectorKernels 0 for those)"
+      : cpuVectorCode() == AVX512
+      ? "scalar loops (femdemVectorKernels 0)"
+      : "scalar loops (the CPU has no AVX-512)";
+}
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::femdemSolid::materialTable::set(const UList<femdemMaterial>& mats)
