@@ -139,6 +139,33 @@ struct callLanes
     //  vector and its squared length, 1 where it crosses the target
     double l0[3][3][size], dl[3][3][size], s0[3][size], s1[3][size];
     double dx[3][size], dy[3][size], len2[3][size], crosses[3][size];
+    //- Per call: contactor, target and its largest inverse mass, penalty,
+    //  friction, and the call's first crossing edge in the edge lanes
+    Foam::label contactor[size], target[size];
+    double targetInvMMax[size], penalty[size], friction[size];
+    Foam::label firstEdge[size + 1];
+
+    //- Pad calls n .. to a multiple of 8 with copies of call 0's test
+    //  inputs and no valid edge; returns the padded count
+    Foam::label pad(const Foam::label n)
+    {
+        const Foam::label nc = (n + 7)/8*8;
+        for (Foam::label j = n; j < nc; ++j)
+        {
+            for (int m = 0; m < 6; ++m) cx[m][j] = cx[m][0];
+            for (int m = 0; m < 4; ++m) box[m][j] = box[m][0];
+            for (int k = 0; k < 3; ++k)
+            {
+                ax[k][j] = ax[k][0];
+                ay[k][j] = ay[k][0];
+                ex[k][j] = ex[k][0];
+                ey[k][j] = ey[k][0];
+                valid[k][j] = 0;
+            }
+            iA2[j] = iA2[0];
+        }
+        return nc;
+    }
 };
 
 
@@ -160,7 +187,133 @@ struct edgeLanes
     //- The target's terms summed over the pieces from 0 (the sum a call
     //  with this edge alone adds), and whether any piece had a force
     double fT[6][size], any[size];
+
+    //- The crossing edges of calls 0 .. n of C, call by call, edge by
+    //  edge (where their data are: integrateEdgesV4 gathers them), padded
+    //  to a multiple of 8 with the last (results unused); sets
+    //  C.firstEdge, returns the padded count
+    Foam::label gather(callLanes& C, const Foam::label n)
+    {
+        Foam::label nEdges = 0;
+        for (Foam::label j = 0; j < n; ++j)
+        {
+            C.firstEdge[j] = nEdges;
+            const Foam::label c = C.contactor[j];
+            for (int k = 0; k < 3; ++k)
+            {
+                if (!(C.crosses[k][j] > 0)) continue;
+                const Foam::label e = nEdges++;
+                call[e] = j;
+                kj[e] = k*callLanes::size + j;
+                k3j[e] = 3*k*callLanes::size + j;
+                nA[e] = 3*c + k;
+                nB[e] = 3*c + (k == 2 ? 0 : k + 1);
+                t0[e] = 3*C.target[j];
+            }
+        }
+        C.firstEdge[n] = nEdges;
+        const Foam::label ne = (nEdges + 7)/8*8;
+        for (Foam::label e = nEdges; e < ne; ++e)
+        {
+            const Foam::label l = nEdges - 1;
+            call[e] = call[l];
+            kj[e] = kj[l];
+            k3j[e] = k3j[l];
+            nA[e] = nA[l];
+            nB[e] = nB[l];
+            t0[e] = t0[l];
+        }
+        return ne;
+    }
+
+    //- The target's force of call j of C (the terms of its edges' pieces
+    //  in integrateEdge's order; one edge: its lane's sum); false if none
+    bool targetForce(const callLanes& C, const Foam::label j, double fTj[3][2])
+        const
+    {
+        const Foam::label e0 = C.firstEdge[j], e1 = C.firstEdge[j + 1];
+        if (e1 - e0 == 1)
+        {
+            for (int i = 0; i < 3; ++i)
+            {
+                fTj[i][0] = fT[2*i][e0];
+                fTj[i][1] = fT[2*i + 1][e0];
+            }
+            return any[e0] > 0;
+        }
+        bool anyForce = false;
+        for (Foam::label e = e0; e < e1; ++e)
+        {
+            for (int q = 0; q < 4; ++q)
+            {
+                if (friction[q][e] > 0)
+                {
+                    for (int i = 0; i < 3; ++i)
+                    {
+                        fTj[i][0] -= tf[q][2*i][e];
+                        fTj[i][1] -= tf[q][2*i + 1][e];
+                    }
+                }
+                if (normal[q][e] > 0)
+                {
+                    for (int i = 0; i < 3; ++i)
+                    {
+                        fTj[i][0] -= tn[q][2*i][e];
+                        fTj[i][1] -= tn[q][2*i + 1][e];
+                    }
+                    anyForce = true;
+                }
+            }
+        }
+        return anyForce;
+    }
 };
+
+
+//- Add the forces of calls 0 .. nCalls of C integrated in L, pair by pair
+//  (calls 2 i and 2 i + 1), call by call: the contactor's edge forces,
+//  then the target's, as contactorTarget adds them; returns the number of
+//  pairs with a force
+Foam::label addLaneForces
+(
+    const callLanes& C,
+    const edgeLanes& L,
+    const Foam::label nCalls,
+    Foam::UList<Foam::vector2D>& f
+)
+{
+    using namespace Foam;
+    label nActive = 0;
+    for (label call = 0; call < nCalls; call += 2)
+    {
+        bool active = false;
+        for (label j = call; j <= call + 1; ++j)
+        {
+            scalar fT[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+            const bool any = L.targetForce(C, j, fT);
+            for (label e = C.firstEdge[j]; e < C.firstEdge[j + 1]; ++e)
+            {
+                const label nA = L.nA[e], nB = L.nB[e];
+                f[nA].x() += L.fA[0][e];
+                f[nA].y() += L.fA[1][e];
+                f[nB].x() += L.fB[0][e];
+                f[nB].y() += L.fB[1][e];
+            }
+            if (any)
+            {
+                const label t = C.target[j];
+                for (label i = 0; i < 3; ++i)
+                {
+                    f[3*t + i].x() += fT[i][0];
+                    f[3*t + i].y() += fT[i][1];
+                }
+            }
+            active = active || any;
+        }
+        if (active) ++nActive;
+    }
+    return nActive;
+}
 
 
 //- integrateEdge for 8 edges at a time, AVX-512 intrinsics: the same IEEE
@@ -232,15 +385,60 @@ FEMDEM_V4_INLINE V integral
 #undef FEMDEM_V4_INLINE
 
 
+//- The points of an edge's pieces, P[0] = s0 < ... <= P[4] = s1: the break
+//  points where the minimum of lambda_i changes branch (as integrateEdge
+//  finds them), sorted by a network (the values of its insertion sort)
+//  and, past the last one, s1 (empty pieces); returns the number of pieces
+//  the 8 lanes need (one more than the most break points of a lane)
+__attribute__((target("arch=x86-64-v4"))) inline int piecePoints
+(
+    const V l0[3],
+    const V dl[3],
+    const V s0,
+    const V s1,
+    V P[5]
+)
+{
+    const V zero = _mm512_setzero_pd();
+    const V inf = _mm512_set1_pd(std::numeric_limits<double>::infinity());
+    V r[3];
+    M found[3];
+    for (int i = 0; i < 3; ++i)
+    {
+        const int k = (i + 1) % 3;
+        const V dd = sub(dl[i], dl[k]);
+        const V num = sub(l0[k], l0[i]);
+        const V lo = mul(s0, dd), hi = mul(s1, dd);
+        const M pos = gt(dd, zero), negd = lt(dd, zero);
+        const M maybe =
+            (pos & gt(num, lo) & lt(num, hi))
+          | (negd & lt(num, lo) & gt(num, hi));
+        const V q = _mm512_mask_div_pd(inf, maybe, num, dd);
+        const M valid = maybe & gt(q, s0) & lt(q, s1);
+        r[i] = _mm512_mask_blend_pd(valid, inf, q);
+        found[i] = valid;
+    }
+    const V a = mn(r[0], r[1]), b = mx(r[0], r[1]);
+    const V c = mn(b, r[2]), d = mx(b, r[2]);
+    const V e = mn(a, c), f = mx(a, c);
+    P[0] = s0;
+    P[1] = mn(e, s1);
+    P[2] = mn(f, s1);
+    P[3] = mn(d, s1);
+    P[4] = s1;
+    return
+        1 + ((found[0] | found[1] | found[2]) != 0)
+      + (((found[0] & found[1]) | (found[0] & found[2]) | (found[1] & found[2])) != 0)
+      + ((found[0] & found[1] & found[2]) != 0);
+}
+
+
 __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
 (
     edgeLanes* __restrict Lp,
     const callLanes* __restrict Cp,
     const double* __restrict v,
     const double* __restrict invM,
-    const double* __restrict callInvMMax,
-    const double* __restrict penalty,
-    const double* __restrict friction,
     const Foam::label n,
     const double frictionFactor,
     const double dt
@@ -251,7 +449,6 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
     const V zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1);
     const V three = _mm512_set1_pd(3);
     const V six = _mm512_set1_pd(6), half = _mm512_set1_pd(0.5);
-    const V inf = _mm512_set1_pd(std::numeric_limits<double>::infinity());
 
     for (Foam::label j = 0; j < n; j += 8)
     {
@@ -269,36 +466,8 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
             dl[i] = gather(k3j, C.dl[0][i]);
         }
 
-        // Break points where the minimum changes branch (+inf: none)
-        V r[3];
-        M found[3];
-        for (int i = 0; i < 3; ++i)
-        {
-            const int k = (i + 1) % 3;
-            const V dd = sub(dl[i], dl[k]);
-            const V num = sub(l0[k], l0[i]);
-            const V lo = mul(s0, dd), hi = mul(s1, dd);
-            const M pos = gt(dd, zero), negd = lt(dd, zero);
-            const M maybe =
-                (pos & gt(num, lo) & lt(num, hi))
-              | (negd & lt(num, lo) & gt(num, hi));
-            const V q = _mm512_mask_div_pd(inf, maybe, num, dd);
-            const M valid = maybe & gt(q, s0) & lt(q, s1);
-            r[i] = _mm512_mask_blend_pd(valid, inf, q);
-            found[i] = valid;
-        }
-        // Pieces: one more than the most break points of a lane (the
-        // others are empty in every lane)
-        const int nPieces =
-            1 + ((found[0] | found[1] | found[2]) != 0)
-          + (((found[0] & found[1]) | (found[0] & found[2])
-            | (found[1] & found[2])) != 0)
-          + ((found[0] & found[1] & found[2]) != 0);
-        // Sorted (network) and capped at s1: the points of the pieces
-        const V a = mn(r[0], r[1]), b = mx(r[0], r[1]);
-        const V c = mn(b, r[2]), d = mx(b, r[2]);
-        const V e = mn(a, c), f = mx(a, c);
-        const V P[5] = {s0, mn(e, s1), mn(f, s1), mn(d, s1), s1};
+        V P[5];
+        const int nPieces = piecePoints(l0, dl, s0, s1, P);
 
         const V iLen = _mm512_div_pd(one, len);
         const V tx = mul(dx, iLen), ty = mul(dy, iLen);
@@ -315,11 +484,11 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
             vT[2*i] = gather(ti, v);
             vT[2*i + 1] = gather(ti, v + 1);
         }
-        const V p = gather(call, penalty), mu = gather(call, friction);
+        const V p = gather(call, C.penalty), mu = gather(call, C.friction);
         // Friction regularisation eta = f/(invMMax len dt), mu > 0, with
         // invMMax = max(max(invM[nA], invM[nB]), the target's)
         const V invMMax =
-            mx(mx(gather(nA, invM), gather(nB, invM)), gather(call, callInvMMax));
+            mx(mx(gather(nA, invM), gather(nB, invM)), gather(call, C.targetInvMMax));
         const V eta = _mm512_mask_div_pd
         (
             zero, gt(mu, zero), _mm512_set1_pd(frictionFactor),
@@ -1260,25 +1429,27 @@ void Foam::contactLaws::potential::addForcesLanes
     // integrated 8 at a time (integrateEdgesV4), then their forces added
     // call by call in the pairs' order, as contactorTarget adds them
     const vector2D* x = solid.x().cdata();
-    const vector2D* v = solid.v().cdata();
-    const scalar* invM = solid.invMass().cdata();
     const List<unsigned char>& freeEdges = solid.freeEdges();
     callLanes C;
     edgeLanes L;
     static_assert(edgeLanes::size >= 3*callLanes::size, "edge lanes");
-    // (of each call's target: the triangle and its largest inverse mass)
-    label target[callLanes::size];
-    scalar targetInvMMax[callLanes::size];
-    label contactor[callLanes::size];
-    label firstEdge[callLanes::size + 1];
     label nCalls = 0;
 
     // Lane j: contactor c against target tg
-    auto setCall = [&](const label j, const label c, const targetGeometry& tg)
+    auto setCall = [&]
+    (
+        const label j,
+        const label c,
+        const targetGeometry& tg,
+        const scalar p,
+        const scalar mu
+    )
     {
-        contactor[j] = c;
-        target[j] = tg.t;
-        targetInvMMax[j] = tg.invMMax;
+        C.contactor[j] = c;
+        C.target[j] = tg.t;
+        C.targetInvMMax[j] = tg.invMMax;
+        C.penalty[j] = p;
+        C.friction[j] = mu;
         for (label k = 0; k < 3; ++k)
         {
             C.cx[2*k][j] = x[3*c + k].x();
@@ -1294,130 +1465,19 @@ void Foam::contactLaws::potential::addForcesLanes
         C.iA2[j] = tg.iA2;
     };
 
-    scalar penalty[callLanes::size], friction[callLanes::size];
-
     auto flush = [&]()
     {
-        // Pad the calls to a multiple of 8 (no valid edge)
-        const label nc = (nCalls + 7)/8*8;
-        for (label j = nCalls; j < nc; ++j)
-        {
-            for (label m = 0; m < 6; ++m) C.cx[m][j] = C.cx[m][0];
-            for (label m = 0; m < 4; ++m) C.box[m][j] = C.box[m][0];
-            for (label k = 0; k < 3; ++k)
-            {
-                C.ax[k][j] = C.ax[k][0];
-                C.ay[k][j] = C.ay[k][0];
-                C.ex[k][j] = C.ex[k][0];
-                C.ey[k][j] = C.ey[k][0];
-                C.valid[k][j] = 0;
-            }
-            C.iA2[j] = C.iA2[0];
-        }
-        testCallsV4(&C, nc);
-
-        // The crossing edges, call by call, edge by edge: where their data
-        // are (integrateEdgesV4 gathers them)
-        label nEdges = 0;
-        for (label j = 0; j < nCalls; ++j)
-        {
-            firstEdge[j] = nEdges;
-            const label c = contactor[j];
-            for (label k = 0; k < 3; ++k)
-            {
-                if (!(C.crosses[k][j] > 0)) continue;
-                const label e = nEdges++;
-                L.call[e] = j;
-                L.kj[e] = k*callLanes::size + j;
-                L.k3j[e] = 3*k*callLanes::size + j;
-                L.nA[e] = 3*c + k;
-                L.nB[e] = 3*c + (k == 2 ? 0 : k + 1);
-                L.t0[e] = 3*target[j];
-            }
-        }
-        firstEdge[nCalls] = nEdges;
-
-        // Pad the edges to a multiple of 8 with the last (unused results)
-        const label ne = (nEdges + 7)/8*8;
-        for (label e = nEdges; e < ne; ++e)
-        {
-            const label l = nEdges - 1;
-            L.call[e] = L.call[l];
-            L.kj[e] = L.kj[l];
-            L.k3j[e] = L.k3j[l];
-            L.nA[e] = L.nA[l];
-            L.nB[e] = L.nB[l];
-            L.t0[e] = L.t0[l];
-        }
+        testCallsV4(&C, C.pad(nCalls));
+        const label ne = L.gather(C, nCalls);
         if (ne)
         {
             integrateEdgesV4
             (
-                &L, &C, &v[0].x(), invM, targetInvMMax, penalty, friction, ne,
+                &L, &C, &solid.v()[0].x(), solid.invMass().cdata(), ne,
                 frictionFactor_, dt
             );
         }
-
-        for (label call = 0; call < nCalls; call += 2)
-        {
-            bool active = false;
-            for (label j = call; j <= call + 1; ++j)
-            {
-                bool any = false;
-                scalar fT[3][2] = {{0, 0}, {0, 0}, {0, 0}};
-                // One crossing edge: its lane's sum is the call's
-                const bool alone = firstEdge[j + 1] - firstEdge[j] == 1;
-                if (alone)
-                {
-                    const label e = firstEdge[j];
-                    for (label i = 0; i < 3; ++i)
-                    {
-                        fT[i][0] = L.fT[2*i][e];
-                        fT[i][1] = L.fT[2*i + 1][e];
-                    }
-                    any = L.any[e] > 0;
-                }
-                for (label e = firstEdge[j]; e < firstEdge[j + 1]; ++e)
-                {
-                    for (label q = 0; q < 4 && !alone; ++q)
-                    {
-                        if (L.friction[q][e] > 0)
-                        {
-                            for (label i = 0; i < 3; ++i)
-                            {
-                                fT[i][0] -= L.tf[q][2*i][e];
-                                fT[i][1] -= L.tf[q][2*i + 1][e];
-                            }
-                        }
-                        if (L.normal[q][e] > 0)
-                        {
-                            for (label i = 0; i < 3; ++i)
-                            {
-                                fT[i][0] -= L.tn[q][2*i][e];
-                                fT[i][1] -= L.tn[q][2*i + 1][e];
-                            }
-                            any = true;
-                        }
-                    }
-                    const label nA = L.nA[e], nB = L.nB[e];
-                    f[nA].x() += L.fA[0][e];
-                    f[nA].y() += L.fA[1][e];
-                    f[nB].x() += L.fB[0][e];
-                    f[nB].y() += L.fB[1][e];
-                }
-                if (any)
-                {
-                    const label t = target[j];
-                    for (label i = 0; i < 3; ++i)
-                    {
-                        f[3*t + i].x() += fT[i][0];
-                        f[3*t + i].y() += fT[i][1];
-                    }
-                }
-                active = active || any;
-            }
-            if (active) ++nActive_;
-        }
+        nActive_ += addLaneForces(C, L, nCalls, f);
         nCalls = 0;
     };
 
@@ -1429,19 +1489,16 @@ void Foam::contactLaws::potential::addForcesLanes
         const scalar mu
     )
     {
-        for (label j = nCalls; j <= nCalls + 1; ++j)
-        {
-            penalty[j] = p;
-            friction[j] = mu;
-        }
-        setCall(nCalls, ga.t, gb);
-        setCall(nCalls + 1, gb.t, ga);
+        setCall(nCalls, ga.t, gb, p, mu);
+        setCall(nCalls + 1, gb.t, ga, p, mu);
         nCalls += 2;
         if (nCalls == callLanes::size) flush();
     };
     forEachContactPair<decltype(collect), true>(solid, collect);
     if (nCalls) flush();
 }
+
+
 #endif
 
 
