@@ -9,6 +9,7 @@
 # accounted for: mesh gas + crack gas mass changes only by what the network
 # created for isolated joints and what it could not hand back (both printed),
 # and mesh + crack gas energy + the work on the solid likewise, to round-off.
+# A misspelt entry and partitionWeight -5 are FatalIOErrors naming them.
 # Restart (<time>/uniform/crackGas beside the solid's femdemState): from
 # 0.25 ms (50 joints hold gas) to 0.5 ms equals the one run (fields, solid,
 # crack gas file, budget rows: 1e-12); a damaged crack gas file (a size, a
@@ -31,6 +32,13 @@ if (cd crackGasTypo && jwlIbFoam > log.typo 2>&1) || ! grep -q "unknown entry 'm
     echo ">> misspelt crackGas entry: not refused  <-- FAIL"; tail -5 crackGasTypo/log.typo; exit 1
 fi
 echo ">> misspelt crackGas entry refused, naming it"
+# A balancing weight out of range is refused, naming the entry
+sed -i 's/^crackGas { minApertur 1e-6; }/crackGas { partitionWeight -5; }/' crackGasTypo/constant/immersedBodyProperties
+(cd crackGasTypo && jwlIbFoam > log.weight 2>&1); rc=$?
+if [ $rc = 0 ] || [ $rc -ge 128 ] || ! grep -q "entry 'partitionWeight' in crackGas must be in \[0, 1e4\], got -5" crackGasTypo/log.weight; then
+    echo ">> partitionWeight -5: not refused with a FatalIOError naming it (exit status $rc)  <-- FAIL"; tail -5 crackGasTypo/log.weight; exit 1
+fi
+echo ">> partitionWeight -5 refused, naming the entry (exit status $rc)"
 cd crackGas || exit 1
 /usr/bin/python3 - <<'PY'
 import os, sys

@@ -14,7 +14,9 @@
 #   the fast loads, halo rebuilds (fragments and the pulled part move by
 #   more than a quarter of the halo width).
 # Load balancing: the fast impact on 3 ranks with maxImbalance 0.01 must
-# repartition by the contact work and migrate triangles, still bitwise.
+# repartition by the contact work and migrate triangles, still bitwise; on
+# 2 ranks extra weights on a quarter of the plate (a coupled model's work)
+# must repartition at the default maxImbalance and balance the weights.
 # Failure paths: a halo too narrow for the motion within one interval stops
 # with a FatalError naming 'partition.haloWidth'; a negative haloWidth and
 # bad balancing entries (maxImbalance, contactPairWeight, balanceInterval)
@@ -62,6 +64,43 @@ nMig=$(grep -o '([0-9]* triangles migrated)' log.impactBalanced3 | tail -1 | tr 
 if [ "${nRep:-0}" -lt 1 ] || [ "${nMig:-0}" -lt 1 ]; then
     echo ">> impactBalanced3: ${nRep:-no} repartitions, ${nMig:-no} triangles migrated; at least one of each expected  <-- FAIL"; fail=1
 fi
+# Extra weights (a coupled model's work inside the sub-steps, as the crack
+# gas's control volumes give, femdemPartition::setExtraWeights): 90 more on
+# every triangle of the plate's right quarter; the default maxImbalance
+# repartitions, and the rank that owns the weighted quarter gives away
+# triangles elsewhere; still bitwise. The same run without the weights must
+# not repartition (the check on the weights is what moved the owners).
+run impactExtraWeights 1500 4 2 -load impact -intervals 30 -extraWeights 90
+run impactNoExtra      1500 4 2 -load impact -intervals 30
+for name in impactExtraWeights impactNoExtra; do
+    nRep=$(grep -o 'load-balancing repartitions [0-9]*' log.$name | tail -1 | awk '{print $3}')
+    owned=$(grep -o 'owned triangles per rank .*' log.$name | tail -1)
+    echo ">> $name: $nRep repartitions; $owned"
+    eval "nRep_$name=${nRep:-0}"
+done
+# The weighted quarter is a quarter of the triangles but, at 10 + 90
+# against 10 (and the contact pairs), most of the work: balanced, the rank
+# that holds it owns well under half of the triangles, and the partition's
+# own weight sums (printed after each repartition) are within maxImbalance
+/usr/bin/python3 - log.impactExtraWeights "$nRep_impactExtraWeights" "$nRep_impactNoExtra" <<'PY' || fail=1
+import re, sys
+log, nw, n0 = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+text = open(log).read()
+m = re.findall(r"owned triangles per rank \d+\((\d+) (\d+)\), of them in the right quarter \d+\((\d+) (\d+)\)", text)
+o0, o1, r0, r1 = (int(x) for x in m[-1])
+heavy = 0 if r0 >= r1 else 1
+oh, rh = (o0, r0) if heavy == 0 else (o1, r1)
+total = o0 + o1
+after = [float(x) for x in re.findall(r"work imbalance now (\S+)", text)]
+imb = after[-1] if after else float("nan")
+print(f">> extra weights: rank {heavy} holds {rh} of {r0 + r1} weighted triangles and owns {oh} of {total};"
+      f" weight imbalance after the last repartition {imb:.3g} (limit 0.1); repartitions {nw} with, {n0} without")
+ok = nw >= 1 and n0 == 0 and oh < 0.45*total and imb < 0.1
+if not ok:
+    print(">> extra weights: expected a repartition only with them, the heavy rank below 45 % of the"
+          " triangles and the weights balanced within 0.1  <-- FAIL")
+sys.exit(0 if ok else 1)
+PY
 badEntry() {  # entries expected-message
     mpirun -np 2 femdemPartitionCheck -parallel -load tension -intervals 1 -partitionEntries "$1" > log.badEntry 2>&1
     local rc=$?

@@ -377,12 +377,28 @@ Foam::labelList Foam::femdemPartition::ownedWeights() const
 {
     labelList count(globalTriangle_.size(), Zero);
     solid_->contact().addPairCounts(count);
+    const bool extra = extraWeight_.size() == nGlobal_;
     forAll(count, t)
     {
         count[t] =
-            owned_[t] ? 10 + label(std::round(5*pairWeight_*count[t])) : 0;
+            owned_[t]
+          ? 10 + label(std::round(5*pairWeight_*count[t]))
+          + (extra ? extraWeight_[globalTriangle_[t]] : 0)
+          : 0;
     }
     return count;
+}
+
+
+void Foam::femdemPartition::setExtraWeights(const labelUList& w)
+{
+    if (w.size() && w.size() != nGlobal_)
+    {
+        FatalErrorInFunction
+            << w.size() << " extra work weights for a solid of " << nGlobal_
+            << " triangles" << exit(FatalError);
+    }
+    extraWeight_ = w;
 }
 
 

@@ -40,12 +40,13 @@ Foam::crackGasCoupling::crackGasCoupling
     lostEnergy_(0),
     maxRun_(0),
     maxRunOf_(0),
-    maxShared_(0)
+    maxShared_(0),
+    partitionWeight_(dict.getOrDefault<scalar>("partitionWeight", 20))
 {
     // A misspelt entry would silently take its default
     const wordList valid
     ({"flux", "RKorder", "frictionFactor", "kapilaTerm", "minAperture",
-      "maxVolumeChange", "ambient"});
+      "maxVolumeChange", "ambient", "partitionWeight"});
     for (const word& key : dict.toc())
     {
         if (!valid.found(key))
@@ -54,6 +55,12 @@ Foam::crackGasCoupling::crackGasCoupling
                 << "unknown entry '" << key << "' in crackGas; valid: "
                 << valid << exit(FatalIOError);
         }
+    }
+    if (!(partitionWeight_ >= 0 && partitionWeight_ <= 1e4))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'partitionWeight' in crackGas must be in [0, 1e4], got "
+            << partitionWeight_ << exit(FatalIOError);
     }
 }
 
@@ -652,7 +659,10 @@ Foam::label Foam::crackGasCoupling::advanceSolid
     const scalar dt
 )
 {
-    // The halo rebuilt first: the hook takes the local node numbers
+    // The network's work in the balancing's weights (it runs inside the
+    // sub-steps, where the solid's own weights do not see it), then the
+    // halo rebuilt: the hook takes the local node numbers
+    setPartitionWeights(partition);
     partition.update();
     // The copy's work displacement starts from zero, as the local solid's
     copy.workDisplacementRef() = Zero;
@@ -673,6 +683,25 @@ Foam::label Foam::crackGasCoupling::advanceSolid
     net_.distributeGas(partition.triangleOwner());
     net_.endStep(copy.x(), dt);
     return n;
+}
+
+
+void Foam::crackGasCoupling::setPartitionWeights(femdemPartition& partition)
+{
+    if (!(partitionWeight_ > 0)) return;
+    // Half a control volume's work to each triangle of its joint: its
+    // sub-steps run on the ranks owning a node of it, its gas step on the
+    // owner of the first triangle
+    const jointTopology& topo = partition.globalTopology();
+    const label half = label(std::round(0.5*partitionWeight_));
+    weights_.setSize(partition.triangleOwner().size());
+    weights_ = 0;
+    for (const label j : net_.joints())
+    {
+        weights_[topo.jointTriangleA()[j]] += half;
+        weights_[topo.jointTriangleB()[j]] += half;
+    }
+    partition.setExtraWeights(weights_);
 }
 
 

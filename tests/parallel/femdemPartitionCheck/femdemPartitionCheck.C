@@ -26,7 +26,10 @@ Description
     potential|none, -weibull (Weibull joint strengths, m = 6),
     -owner metis|stripes, -haloWidth [m], -partitionEntries '<entries>'
     (more entries of the sub-dictionary partition, e.g. 'maxImbalance
-    0.01;').
+    0.01;'), -extraWeights W (W added to the balancing weight of every
+    triangle in the plate's right quarter, as a coupled model's work:
+    femdemPartition::setExtraWeights). Before the last line: the owned
+    triangles per rank and, of them, those in the right quarter.
 
 \*---------------------------------------------------------------------------*/
 
@@ -130,6 +133,12 @@ int main(int argc, char *argv[])
         "partitionEntries", "string",
         "more entries of the partition sub-dictionary"
     );
+    argList::addOption
+    (
+        "extraWeights", "label",
+        "work weight added to the triangles of the plate's right quarter"
+        " (femdemPartition::setExtraWeights, as a coupled model's)"
+    );
     argList::addBoolOption("verbose", "list the first differing nodes");
     argList::addBoolOption
     (
@@ -186,6 +195,20 @@ int main(int argc, char *argv[])
         partPtr.reset(new femdemPartition(mesh, dict));
     }
     femdemPartition& part = partPtr();
+    const label extraWeight = args.getOrDefault<label>("extraWeights", 0);
+    if (extraWeight > 0)
+    {
+        labelList w(mesh.nTriangles(), Zero);
+        forAll(w, t)
+        {
+            const triangleVertices& v = mesh.triangles()[t];
+            const scalar xc =
+                (mesh.points()[v[0]].x() + mesh.points()[v[1]].x()
+               + mesh.points()[v[2]].x())/3;
+            if (xc > 0.75*lx) w[t] = extraWeight;
+        }
+        part.setExtraWeights(w);
+    }
 
     Pout<< "rank " << Pstream::myProcNo() << ": " << part.nOwned()
         << " owned, " << part.nHalo() << " halo triangles, neighbours "
@@ -272,6 +295,22 @@ int main(int argc, char *argv[])
                 << " serial one " << ns << exit(FatalError);
         }
     }
+    // Owned triangles of every rank, and of them in the right quarter
+    labelList owned(Pstream::nProcs(), Zero), right(Pstream::nProcs(), Zero);
+    owned[Pstream::myProcNo()] = part.nOwned();
+    forAll(part.globalTriangles(), t)
+    {
+        if (!part.owned(t)) continue;
+        const triangleVertices& v = mesh.triangles()[part.globalTriangles()[t]];
+        const scalar xc =
+            (mesh.points()[v[0]].x() + mesh.points()[v[1]].x()
+           + mesh.points()[v[2]].x())/3;
+        if (xc > 0.75*lx) ++right[Pstream::myProcNo()];
+    }
+    Pstream::listCombineGather(owned, plusEqOp<label>());
+    Pstream::listCombineGather(right, plusEqOp<label>());
+    Info<< "owned triangles per rank " << owned << ", of them in the right"
+        << " quarter " << right << endl;
     Info<< "halo displacement checks " << part.nDisplacementChecks()
         << ", halo rebuilds " << part.nRebuilds()
         << ", load-balancing repartitions " << part.nRepartitions() << " ("
