@@ -10,6 +10,9 @@
 # created for isolated joints and what it could not hand back (both printed),
 # and mesh + crack gas energy + the work on the solid likewise, to round-off.
 # A misspelt entry and partitionWeight -5 are FatalIOErrors naming them.
+# The sub-steps counted by what bounded them (the solid's own step, the
+# network's volume-change limit, ...) add up to the run's sub-steps, serial
+# and on 2 ranks.
 # Restart (<time>/uniform/crackGas beside the solid's femdemState): from
 # 0.25 ms (50 joints hold gas) to 0.5 ms equals the one run (fields, solid,
 # crack gas file, budget rows: 1e-12); a damaged crack gas file (a size, a
@@ -18,6 +21,19 @@
 # 2-rank restart from a signal stop against the 2-rank run (part 3).
 cd "$JWLIBFOAM_TEST_DIR" || exit 1
 data=$JWLIBFOAM_PROJECT/tests/regression/coupledData/crackVenting
+# What bounded the solid's sub-steps (crackGasCoupling::reportSubSteps):
+# counted once per sub-step, the same on every rank, so the total equals
+# the sum of the log's 'solid: subSteps N'; prints the shares
+checkBounds() {  # log name
+    local line total sum
+    line=$(grep -m1 '^Crack gas: solid sub-steps' "$1")
+    total=$(echo "$line" | sed -n 's/^Crack gas: solid sub-steps \([0-9]*\),.*/\1/p')
+    sum=$(grep -E '^ +solid: subSteps' "$1" | awk '{s += $3} END {print s + 0}')
+    echo ">> $2: ${line:-no sub-step bounds line}; sum of the steps' subSteps $sum"
+    if [ -z "$total" ] || [ "$total" != "$sum" ]; then
+        echo ">> $2: sub-steps counted by bound ${total:-none} != $sum  <-- FAIL"; return 1
+    fi
+}
 rm -rf crackGas && cp -r "$data" crackGas && cd crackGas || exit 1
 echo 'crackGas { }' >> constant/immersedBodyProperties
 # Fields written to round-trip precision (the test's copy): the restart
@@ -31,6 +47,7 @@ sed -i 's/^crackGas { }/crackGas { minApertur 1e-6; }/' crackGasTypo/constant/im
 if (cd crackGasTypo && jwlIbFoam > log.typo 2>&1) || ! grep -q "unknown entry 'minApertur' in crackGas" crackGasTypo/log.typo; then
     echo ">> misspelt crackGas entry: not refused  <-- FAIL"; tail -5 crackGasTypo/log.typo; exit 1
 fi
+checkBounds crackGas/log.jwlIbFoam "serial" || exit 1
 echo ">> misspelt crackGas entry refused, naming it"
 # A balancing weight out of range is refused, naming the entry
 sed -i 's/^crackGas { minApertur 1e-6; }/crackGas { partitionWeight -5; }/' crackGasTypo/constant/immersedBodyProperties
@@ -206,6 +223,7 @@ start=$(date +%s)
 timeout 300 mpirun --allow-run-as-root --oversubscribe -np 2 jwlIbFoam -parallel > log.jwlIbFoam 2>&1 \
     || { tail -5 log.jwlIbFoam; echo ">> 2 ranks: jwlIbFoam failed  <-- FAIL"; exit 1; }
 echo ">> 2 ranks to 1.13e-4 s: $(( $(date +%s) - start )) s wall"
+checkBounds log.jwlIbFoam "2 ranks" || exit 1
 /usr/bin/python3 - <<'PY'
 import os, sys
 import numpy as np

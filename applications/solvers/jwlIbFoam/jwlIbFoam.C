@@ -228,6 +228,7 @@ int main(int argc, char *argv[])
         << tProject << " s, setFluidFraction " << tFraction
         << " s, wallForces " << tForces << " s), solid " << tSolid << " s"
         << nl;
+    if (crackGasPtr.valid()) crackGasPtr->reportSubSteps();
     if (partitionPtr.valid())
     {
         // Time a rank waits for the others in the solid's sub-steps: the

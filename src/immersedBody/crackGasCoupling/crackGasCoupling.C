@@ -504,10 +504,23 @@ using namespace Foam;
 //  if some rank reads a node outside its halo, those it does not own from
 //  their owners (two gathers per sub-step); the sub-step is the smallest
 //  over the ranks
+//- The smaller of two (sub-step limit, bound) pairs: the limit of
+//  Foam::min (b where !(a < b)), so that the limit is the one minOp gives;
+//  of equal limits the first bound in crackNetwork::subStepBound's order
+struct smallestLimitOp
+{
+    vector2D operator()(const vector2D& a, const vector2D& b) const
+    {
+        if (a.x() == b.x()) return a.y() <= b.y() ? a : b;
+        return a.x() < b.x() ? a : b;
+    }
+};
+
 class partitionedSubSteps
 :
     public femdemSolid::subStepHook
 {
+    crackNetwork& net_;
     crackNetwork::subSteps inner_;
     const femdemPartition& partition_;
     femdemSolid& copy_;
@@ -532,6 +545,7 @@ public:
         femdemSolid& copy
     )
     :
+        net_(net),
         inner_(net, otherForces),
         partition_(partition),
         copy_(copy),
@@ -613,8 +627,20 @@ public:
             }
         }
 
-        // The forces in the copy (the other forces plus the network's)
-        const scalar h = returnReduce(inner_.beforeSubStep(copy_), minOp<scalar>());
+        // The forces in the copy (the other forces plus the network's);
+        // the limit and what bounds it, the smallest over the ranks (the
+        // same count on every rank)
+        // (the limit first: it sets b)
+        crackNetwork::subStepBound b = crackNetwork::subStepBound::solid;
+        const scalar hLocal = inner_.limit(copy_, b);
+        vector2D hb(hLocal, scalar(label(b)));
+        reduce(hb, smallestLimitOp());
+        const scalar h = hb.x();
+        net_.countSubStep
+        (
+            h, crackNetwork::subStepBound(label(hb.y())),
+            local.stableTimeStep()
+        );
         const List<vector2D>& F = copy_.externalForce();
         List<vector2D>& f = local.externalForce();
         if (first_)
@@ -702,6 +728,25 @@ void Foam::crackGasCoupling::setPartitionWeights(femdemPartition& partition)
         weights_[topo.jointTriangleB()[j]] += half;
     }
     partition.setExtraWeights(weights_);
+}
+
+
+void Foam::crackGasCoupling::reportSubSteps() const
+{
+    // (the counts are the same on every rank)
+    const FixedList<label, crackNetwork::nSubStepBounds>& n =
+        net_.subStepBounds();
+    label total = 0;
+    for (const label c : n) total += c;
+    Info<< "Crack gas: solid sub-steps " << total << ", bound by";
+    forAll(n, i)
+    {
+        Info<< (i ? ", " : " ")
+            << crackNetwork::subStepBoundNames[crackNetwork::subStepBound(i)]
+            << " " << n[i] << " ("
+            << (total > 0 ? 100.0*n[i]/total : 0) << " %)";
+    }
+    Info<< nl;
 }
 
 

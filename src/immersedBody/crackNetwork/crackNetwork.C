@@ -47,6 +47,20 @@ namespace
 }
 
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::crackNetwork::subStepBound>
+Foam::crackNetwork::subStepBoundNames
+({
+    { subStepBound::solid, "solid" },
+    { subStepBound::gasSpring, "gasSpring" },
+    { subStepBound::volumeChange, "volumeChange" },
+    { subStepBound::acceleration, "acceleration" },
+    { subStepBound::voidSpring, "voidSpring" },
+    { subStepBound::voidVolumeChange, "voidVolumeChange" },
+});
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::crackNetwork::crackNetwork
@@ -61,6 +75,7 @@ Foam::crackNetwork::crackNetwork
     gas_(mixture, withFlux(dict)),
     minAperture_(dict.getOrDefault<scalar>("minAperture", 1e-6)),
     maxVolumeChange_(dict.getOrDefault<scalar>("maxVolumeChange", 0.1)),
+    subStepBounds_(Zero),
     ambientRho_(1.2),
     ambientP_(1e5),
     jointCV_(topology.nJoints(), -1),
@@ -857,7 +872,11 @@ void Foam::crackNetwork::updateForces
 }
 
 
-Foam::scalar Foam::crackNetwork::subSteps::beforeSubStep(femdemSolid& solid)
+Foam::scalar Foam::crackNetwork::subSteps::limit
+(
+    femdemSolid& solid,
+    subStepBound& bound
+)
 {
     List<vector2D>& f = solid.externalForce();
     if (first_)
@@ -868,7 +887,16 @@ Foam::scalar Foam::crackNetwork::subSteps::beforeSubStep(femdemSolid& solid)
         first_ = false;
     }
     net_.updateForces(solid.x(), f);
-    return net_.stableSubStep(solid.v(), solid.invMass());
+    return net_.stableSubStep(solid.v(), solid.invMass(), &bound);
+}
+
+
+Foam::scalar Foam::crackNetwork::subSteps::beforeSubStep(femdemSolid& solid)
+{
+    subStepBound b = subStepBound::solid;
+    const scalar h = limit(solid, b);
+    net_.countSubStep(h, b, solid.stableTimeStep());
+    return h;
 }
 
 
@@ -881,17 +909,28 @@ void Foam::crackNetwork::subSteps::afterSubStep(const femdemSolid& solid)
 Foam::scalar Foam::crackNetwork::stableSubStep
 (
     const UList<vector2D>& v,
-    const UList<scalar>& invMass
+    const UList<scalar>& invMass,
+    subStepBound* bound
 ) const
 {
     // Stability: a node moving by delta changes the gap's volume by
     // L delta/2, its pressure by Gamma p L delta/(2 V), its force by L/2 of
     // that: k = Gamma p L^2/(4 V); two opposite nodes close on each other,
     // so omega^2 = 2 k/m, and h <= 0.5*2/omega. Accuracy: the gap changes
-    // by at most 5 % in a sub-step (the forces are those at its start: a
+    // by at most maxVolumeChange in a sub-step (the forces are those at its start: a
     // thin gap that opens many times over in one sub-step would be paid at
     // its start pressure), from the faces' speed and acceleration
     scalar h = GREAT;
+    subStepBound which = subStepBound::solid;
+    // h = min(h, x) (x where !(h < x), as Foam::min), noting which bound
+    auto limitBy = [&](const scalar x, const subStepBound b)
+    {
+        if (!(h < x))
+        {
+            h = x;
+            which = b;
+        }
+    };
     for (const label i : activeCVs())
     {
         // The gap and its gas as the last updateForces found them
@@ -903,7 +942,7 @@ Foam::scalar Foam::crackNetwork::stableSubStep
         for (const label node : jn) im = max(im, invMass[node]);
         if (k*im > 0)
         {
-            h = min(h, 0.5*2/Foam::sqrt(2*k*im));
+            limitBy(0.5*2/Foam::sqrt(2*k*im), subStepBound::gasSpring);
         }
         const scalar gap = V/L;
         const scalar speed = max
@@ -911,8 +950,16 @@ Foam::scalar Foam::crackNetwork::stableSubStep
             mag((v[jn[2]] - v[jn[0]]) & n), mag((v[jn[3]] - v[jn[1]]) & n)
         );
         const scalar accel = p*L*im;
-        h = min(h, maxVolumeChange_*gap/max(speed, VSMALL));
-        h = min(h, Foam::sqrt(0.1*gap/max(accel, VSMALL)));
+        limitBy
+        (
+            maxVolumeChange_*gap/max(speed, VSMALL),
+            subStepBound::volumeChange
+        );
+        limitBy
+        (
+            Foam::sqrt(0.1*gap/max(accel, VSMALL)),
+            subStepBound::acceleration
+        );
     }
     // A void: its corner c moved by delta changes each of the m shares by
     // G_c.delta/m, the pressure of share j by Gamma_j p_j of that over
@@ -939,10 +986,18 @@ Foam::scalar Foam::crackNetwork::stableSubStep
         }
         if (stiff*g2im > 0)
         {
-            h = min(h, 0.5*2/Foam::sqrt(2*stiff*g2im));
+            limitBy
+            (
+                0.5*2/Foam::sqrt(2*stiff*g2im), subStepBound::voidSpring
+            );
         }
-        h = min(h, maxVolumeChange_*m*Vmin/max(mag(rate), VSMALL));
+        limitBy
+        (
+            maxVolumeChange_*m*Vmin/max(mag(rate), VSMALL),
+            subStepBound::voidVolumeChange
+        );
     }
+    if (bound) *bound = which;
     return h;
 }
 
