@@ -163,7 +163,9 @@ int main(int argc, char *argv[])
 
     // Wall-clock time of the parts of a step (printed at the end): the
     // coupling is startStep + setFluidFraction (and setEmbeddedBoundary)
-    // + wallForces (and wallWork)
+    // + wallForces (and wallWork, addEnergy, the crack gas exchange); the
+    // solid its sub-cycles (with a partitioned solid the gather of its work
+    // displacement too, which waits for the slowest rank)
     double tGas = 0, tProject = 0, tFraction = 0, tForces = 0, tSolid = 0;
 
     Info<< "\nStarting time loop\n" << endl;
