@@ -496,14 +496,6 @@ namespace
 {
 using namespace Foam;
 
-//- The network's sub-steps on a partitioned solid: each rank runs the
-//  control volumes and voids with a node it owns (crackNetwork::restrictTo)
-//  on the copy of the whole solid, whose nodes it reads from its local
-//  solid (owned, or halo: the halo exchange after every step brings their
-//  positions, velocities and work displacements from their owners), or,
-//  if some rank reads a node outside its halo, those it does not own from
-//  their owners (two gathers per sub-step); the sub-step is the smallest
-//  over the ranks
 //- The smaller of two (sub-step limit, bound) pairs: the limit of
 //  Foam::min (b where !(a < b)), so that the limit is the one minOp gives;
 //  of equal limits the first bound in crackNetwork::subStepBound's order
@@ -516,6 +508,14 @@ struct smallestLimitOp
     }
 };
 
+//- The network's sub-steps on a partitioned solid: each rank runs the
+//  control volumes and voids with a node it owns (crackNetwork::restrictTo)
+//  on the copy of the whole solid, whose nodes it reads from its local
+//  solid (owned, or halo: the halo exchange after every step brings their
+//  positions, velocities and work displacements from their owners), or,
+//  if some rank reads a node outside its halo, those it does not own from
+//  their owners (two gathers per sub-step); the sub-step is the smallest
+//  over the ranks
 class partitionedSubSteps
 :
     public femdemSolid::subStepHook
@@ -629,8 +629,7 @@ public:
 
         // The forces in the copy (the other forces plus the network's);
         // the limit and what bounds it, the smallest over the ranks (the
-        // same count on every rank)
-        // (the limit first: it sets b)
+        // same count on every rank). The limit first: it sets b
         crackNetwork::subStepBound b = crackNetwork::subStepBound::solid;
         const scalar hLocal = inner_.limit(copy_, b);
         vector2D hb(hLocal, scalar(label(b)));
