@@ -244,23 +244,21 @@ struct edgeLanes
         bool anyForce = false;
         for (Foam::label e = e0; e < e1; ++e)
         {
+            // Piece by piece: its friction share, then its normal share
+            auto take = [&](const double share[6][size])
+            {
+                for (int i = 0; i < 3; ++i)
+                {
+                    fTj[i][0] -= share[2*i][e];
+                    fTj[i][1] -= share[2*i + 1][e];
+                }
+            };
             for (int q = 0; q < 4; ++q)
             {
-                if (friction[q][e] > 0)
-                {
-                    for (int i = 0; i < 3; ++i)
-                    {
-                        fTj[i][0] -= tf[q][2*i][e];
-                        fTj[i][1] -= tf[q][2*i + 1][e];
-                    }
-                }
+                if (friction[q][e] > 0) take(tf[q]);
                 if (normal[q][e] > 0)
                 {
-                    for (int i = 0; i < 3; ++i)
-                    {
-                        fTj[i][0] -= tn[q][2*i][e];
-                        fTj[i][1] -= tn[q][2*i + 1][e];
-                    }
+                    take(tn[q]);
                     anyForce = true;
                 }
             }
@@ -381,6 +379,25 @@ FEMDEM_V4_INLINE V integral
             mul(mul(two, pc), Lc)
         )
     );
+}
+//- The target's share c_i r (gx, gy) of a force on its node i: stored at
+//  out[2 i] + j, out[2 i + 1] + j for the replay, and taken from fT in the
+//  lanes of m (friction: c = li, r = 1/sum li; normal: c = IT, r = I/sum IT)
+FEMDEM_V4_INLINE void shareWithTarget
+(
+    const V c[3], const V r, const V gx, const V gy, const M m,
+    double* const out[6], const Foam::label j, V fT[6]
+)
+{
+    for (int i = 0; i < 3; ++i)
+    {
+        const V w = mul(c[i], r);
+        const V sx = mul(w, gx), sy = mul(w, gy);
+        _mm512_storeu_pd(out[2*i] + j, sx);
+        _mm512_storeu_pd(out[2*i + 1] + j, sy);
+        fT[2*i] = _mm512_mask_sub_pd(fT[2*i], m, fT[2*i], sx);
+        fT[2*i + 1] = _mm512_mask_sub_pd(fT[2*i + 1], m, fT[2*i + 1], sy);
+    }
 }
 #undef FEMDEM_V4_INLINE
 
@@ -557,16 +574,12 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
             (
                 zero, fric, one, add(add(li[0], li[1]), li[2])
             );
-            for (int i = 0; i < 3; ++i)
+            double* const tfOut[6] =
             {
-                const V w = mul(li[i], iL);
-                const V tfx = mul(w, Gx), tfy = mul(w, Gy);
-                _mm512_storeu_pd(L.tf[q][2*i] + j, tfx);
-                _mm512_storeu_pd(L.tf[q][2*i + 1] + j, tfy);
-                fT[2*i] = _mm512_mask_sub_pd(fT[2*i], fric, fT[2*i], tfx);
-                fT[2*i + 1] =
-                    _mm512_mask_sub_pd(fT[2*i + 1], fric, fT[2*i + 1], tfy);
-            }
+                L.tf[q][0], L.tf[q][1], L.tf[q][2], L.tf[q][3], L.tf[q][4],
+                L.tf[q][5]
+            };
+            shareWithTarget(li, iL, Gx, Gy, fric, tfOut, j, fT);
 
             // Normal force
             const V pnx = mul(neg(p), nx), pny = mul(neg(p), ny);
@@ -575,16 +588,12 @@ __attribute__((target("arch=x86-64-v4"))) void integrateEdgesV4
             fBx = _mm512_mask_add_pd(fBx, applied, fBx, mul(IB, pnx));
             fBy = _mm512_mask_add_pd(fBy, applied, fBy, mul(IB, pny));
             const V rr = _mm512_mask_div_pd(zero, applied, I, ITsum);
-            for (int i = 0; i < 3; ++i)
+            double* const tnOut[6] =
             {
-                const V wi = mul(IT[i], rr);
-                const V tnx = mul(wi, pnx), tny = mul(wi, pny);
-                _mm512_storeu_pd(L.tn[q][2*i] + j, tnx);
-                _mm512_storeu_pd(L.tn[q][2*i + 1] + j, tny);
-                fT[2*i] = _mm512_mask_sub_pd(fT[2*i], applied, fT[2*i], tnx);
-                fT[2*i + 1] =
-                    _mm512_mask_sub_pd(fT[2*i + 1], applied, fT[2*i + 1], tny);
-            }
+                L.tn[q][0], L.tn[q][1], L.tn[q][2], L.tn[q][3], L.tn[q][4],
+                L.tn[q][5]
+            };
+            shareWithTarget(IT, rr, pnx, pny, applied, tnOut, j, fT);
             any |= applied;
             _mm512_storeu_pd
             (
