@@ -109,6 +109,15 @@ std::string properties
     return text;
 }
 
+//- x of the centroid of triangle t (stripes, the weighted quarter)
+scalar centroidX(const triangleMesh& mesh, const label t)
+{
+    const triangleVertices& v = mesh.triangles()[t];
+    return
+        (mesh.points()[v[0]].x() + mesh.points()[v[1]].x()
+       + mesh.points()[v[2]].x())/3;
+}
+
 } // End anonymous namespace
 
 
@@ -182,10 +191,7 @@ int main(int argc, char *argv[])
         labelList owner(mesh.nTriangles());
         forAll(owner, t)
         {
-            const triangleVertices& v = mesh.triangles()[t];
-            const scalar xc =
-                (mesh.points()[v[0]].x() + mesh.points()[v[1]].x()
-               + mesh.points()[v[2]].x())/3;
+            const scalar xc = centroidX(mesh, t);
             owner[t] = min(label(xc/lx*Pstream::nProcs()), Pstream::nProcs() - 1);
         }
         partPtr.reset(new femdemPartition(mesh, dict, owner));
@@ -201,10 +207,7 @@ int main(int argc, char *argv[])
         labelList w(mesh.nTriangles(), Zero);
         forAll(w, t)
         {
-            const triangleVertices& v = mesh.triangles()[t];
-            const scalar xc =
-                (mesh.points()[v[0]].x() + mesh.points()[v[1]].x()
-               + mesh.points()[v[2]].x())/3;
+            const scalar xc = centroidX(mesh, t);
             if (xc > 0.75*lx) w[t] = extraWeight;
         }
         part.setExtraWeights(w);
@@ -301,11 +304,10 @@ int main(int argc, char *argv[])
     forAll(part.globalTriangles(), t)
     {
         if (!part.owned(t)) continue;
-        const triangleVertices& v = mesh.triangles()[part.globalTriangles()[t]];
-        const scalar xc =
-            (mesh.points()[v[0]].x() + mesh.points()[v[1]].x()
-           + mesh.points()[v[2]].x())/3;
-        if (xc > 0.75*lx) ++right[Pstream::myProcNo()];
+        if (centroidX(mesh, part.globalTriangles()[t]) > 0.75*lx)
+        {
+            ++right[Pstream::myProcNo()];
+        }
     }
     Pstream::listCombineGather(owned, plusEqOp<label>());
     Pstream::listCombineGather(right, plusEqOp<label>());
