@@ -509,12 +509,16 @@ struct smallestLimitOp
 };
 
 //- The network's sub-steps on a partitioned solid: each rank runs the
-//  control volumes and voids with a node it owns (crackNetwork::restrictTo)
-//  on the copy of the whole solid, whose nodes it reads from its local
-//  solid (owned, or halo: the halo exchange after every step brings their
-//  positions, velocities and work displacements from their owners), or,
-//  if some rank reads a node outside its halo, those it does not own from
-//  their owners (two gathers per sub-step); the sub-step is the smallest
+//  control volumes and voids with a node it owns (crackNetwork::restrictTo).
+//  Usually every node they read is in the rank's local solid (owned, or
+//  halo: the halo exchange after every step brings their positions,
+//  velocities and work displacements from their owners), and the network
+//  reads and pushes the local solid's lists directly
+//  (crackNetwork::readLocal). Otherwise (some rank reads a node outside its
+//  halo, or debug switch 1 of crackGasCoupling) it runs on the copy of the
+//  whole solid: the nodes read are copied in from the local solid, those a
+//  rank does not own gathered from their owners (two gathers per
+//  sub-step), and its forces copied back. The sub-step is the smallest
 //  over the ranks
 class partitionedSubSteps
 :
@@ -522,10 +526,15 @@ class partitionedSubSteps
 {
     crackNetwork& net_;
     crackNetwork::subSteps inner_;
+    const UList<vector2D>& otherForces_;
     const femdemPartition& partition_;
     femdemSolid& copy_;
-    //- Read nodes this rank takes from its local solid: global and local
-    //  numbers
+    //- Every read node in the local solid on every rank: the network
+    //  reads the local solid (read_, local_: global and local numbers)
+    bool direct_;
+    labelList read_, local_;
+    //- Otherwise, the read nodes this rank takes from its local solid:
+    //  global and local numbers
     labelList ownGlobal_, ownLocal_;
     //- Read nodes some rank does not own (the same list on every rank):
     //  global and local numbers
@@ -534,6 +543,73 @@ class partitionedSubSteps
     labelList forceGlobal_, forceLocal_;
     List<vector2D> buf_, buf2_;
     bool first_;
+
+    //- The copy's read nodes from the local solid and their owners
+    void copyIn(const femdemSolid& local)
+    {
+        List<vector2D>& x = copy_.xRef();
+        List<vector2D>& v = copy_.vRef();
+        forAll(ownGlobal_, i)
+        {
+            x[ownGlobal_[i]] = local.x()[ownLocal_[i]];
+            v[ownGlobal_[i]] = local.v()[ownLocal_[i]];
+        }
+        // (shared_ is the same list on every rank: all or none gather)
+        if (shared_.size())
+        {
+            partition_.gatherSubset(sharedLocal_, local.x(), local.v(), buf2_);
+            const label n = shared_.size();
+            forAll(shared_, i)
+            {
+                x[shared_[i]] = buf2_[i];
+                v[shared_[i]] = buf2_[n + i];
+            }
+        }
+    }
+
+    //- The local solid's forces: all at the first sub-step (the other
+    //  forces, held over the interval), then the network's nodes
+    void copyForcesOut(femdemSolid& local)
+    {
+        const List<vector2D>& F = copy_.externalForce();
+        List<vector2D>& f = local.externalForce();
+        if (first_)
+        {
+            const labelList& g = partition_.globalTriangles();
+            forAll(g, t)
+            {
+                for (label k = 0; k < 3; ++k) f[3*t + k] = F[3*g[t] + k];
+            }
+        }
+        else
+        {
+            forAll(forceGlobal_, i) f[forceLocal_[i]] = F[forceGlobal_[i]];
+        }
+    }
+
+    //- The network's limit on the local solid (direct_)
+    scalar localLimit(femdemSolid& local, crackNetwork::subStepBound& b)
+    {
+        List<vector2D>& f = local.externalForce();
+        if (first_)
+        {
+            // The step's start on the whole copy (the local solid's state,
+            // the work displacement zero in both), then the local solid's
+            // forces start from the other forces
+            net_.beginStep(copy_.x(), copy_.workDisplacement());
+            net_.readLocal(read_, local_);
+            const labelList& g = partition_.globalTriangles();
+            forAll(g, t)
+            {
+                for (label k = 0; k < 3; ++k)
+                {
+                    f[3*t + k] = otherForces_[3*g[t] + k];
+                }
+            }
+        }
+        net_.updateForces(local.x(), f);
+        return net_.stableSubStep(local.v(), local.invMass(), &b);
+    }
 
 public:
 
@@ -547,8 +623,10 @@ public:
     :
         net_(net),
         inner_(net, otherForces),
+        otherForces_(otherForces),
         partition_(partition),
         copy_(copy),
+        direct_(false),
         first_(true)
     {
         const labelList& owner = partition.triangleOwner();
@@ -560,6 +638,13 @@ public:
         bool allLocal = !(crackGasCoupling::debug & 1);
         for (const label l : local) allLocal = allLocal && l >= 0;
         reduce(allLocal, andOp<bool>());
+        if (allLocal)
+        {
+            direct_ = true;
+            read_ = read;
+            local_ = local;
+            return;
+        }
         DynamicList<label> og, ol, fg, fl, notMine;
         forAll(read, i)
         {
@@ -568,7 +653,7 @@ public:
                 fg.append(read[i]);
                 fl.append(local[i]);
             }
-            if (allLocal || owner[read[i]/3] == me)
+            if (owner[read[i]/3] == me)
             {
                 og.append(read[i]);
                 ol.append(local[i]);
@@ -607,31 +692,22 @@ public:
 
     virtual scalar beforeSubStep(femdemSolid& local)
     {
-        // The nodes read, as they are now
-        List<vector2D>& x = copy_.xRef();
-        List<vector2D>& v = copy_.vRef();
-        forAll(ownGlobal_, i)
-        {
-            x[ownGlobal_[i]] = local.x()[ownLocal_[i]];
-            v[ownGlobal_[i]] = local.v()[ownLocal_[i]];
-        }
-        // (shared_ is the same list on every rank: all or none gather)
-        if (shared_.size())
-        {
-            partition_.gatherSubset(sharedLocal_, local.x(), local.v(), buf2_);
-            const label n = shared_.size();
-            forAll(shared_, i)
-            {
-                x[shared_[i]] = buf2_[i];
-                v[shared_[i]] = buf2_[n + i];
-            }
-        }
-
-        // The forces in the copy (the other forces plus the network's);
-        // the limit and what bounds it, the smallest over the ranks (the
-        // same count on every rank). The limit first: it sets b
+        // The forces (the other forces plus the network's); the limit and
+        // what bounds it, the smallest over the ranks (the same count on
+        // every rank). The limit first: it sets b
         crackNetwork::subStepBound b = crackNetwork::subStepBound::solid;
-        const scalar hLocal = inner_.limit(copy_, b);
+        scalar hLocal;
+        if (direct_)
+        {
+            hLocal = localLimit(local, b);
+        }
+        else
+        {
+            copyIn(local);
+            hLocal = inner_.limit(copy_, b);
+            copyForcesOut(local);
+        }
+        first_ = false;
         vector2D hb(hLocal, scalar(label(b)));
         reduce(hb, smallestLimitOp());
         const scalar h = hb.x();
@@ -640,29 +716,18 @@ public:
             h, crackNetwork::subStepBound(label(hb.y())),
             local.stableTimeStep()
         );
-        const List<vector2D>& F = copy_.externalForce();
-        List<vector2D>& f = local.externalForce();
-        if (first_)
-        {
-            const labelList& g = partition_.globalTriangles();
-            forAll(g, t)
-            {
-                for (label k = 0; k < 3; ++k) f[3*t + k] = F[3*g[t] + k];
-            }
-            first_ = false;
-        }
-        else
-        {
-            // Only the network's nodes change between sub-steps
-            forAll(forceGlobal_, i) f[forceLocal_[i]] = F[forceGlobal_[i]];
-        }
         return h;
     }
 
     virtual void afterSubStep(const femdemSolid& local)
     {
-        List<vector2D>& d = copy_.workDisplacementRef();
         const List<vector2D>& dl = local.workDisplacement();
+        if (direct_)
+        {
+            net_.addWork(dl);
+            return;
+        }
+        List<vector2D>& d = copy_.workDisplacementRef();
         forAll(ownGlobal_, i) d[ownGlobal_[i]] = dl[ownLocal_[i]];
         if (shared_.size())
         {

@@ -80,6 +80,7 @@ Foam::crackNetwork::crackNetwork
     ambientP_(1e5),
     jointCV_(topology.nJoints(), -1),
     restricted_(false),
+    localNodes_(false),
     createdMass_(0),
     createdEnergy_(0),
     removedMass_(0),
@@ -118,7 +119,7 @@ Foam::crackNetwork::crackNetwork
 
 void Foam::crackNetwork::jointGeometry
 (
-    const label j,
+    const jointNodeList& jn,
     const UList<vector2D>& x,
     scalar& area,
     scalar& L,
@@ -127,7 +128,6 @@ void Foam::crackNetwork::jointGeometry
     scalar& g1
 ) const
 {
-    const jointNodeList& jn = topo_.jointNodes()[j];
     const vector2D& p0 = x[jn[0]];
     const vector2D& p1 = x[jn[1]];
     const vector2D& q0 = x[jn[2]];
@@ -198,7 +198,7 @@ Foam::scalarField Foam::crackNetwork::gapAreas(const UList<vector2D>& x) const
     {
         scalar L, g0, g1;
         vector2D n;
-        jointGeometry(cvJoint_[i], x, V[i], L, n, g0, g1);
+        jointGeometry(topo_.jointNodes()[cvJoint_[i]], x, V[i], L, n, g0, g1);
     }
     addVoidShares(x, V);
     return V;
@@ -318,7 +318,7 @@ Foam::scalar Foam::crackNetwork::voidArea
     // counts for nothing and pushes nothing; the gradient of that area is
     // the force per unit pressure on each corner (the volume's gradient,
     // as for the gaps: the gas pays exactly the work it does)
-    const label* node = &voidNode_[voidCornerStart_[k]];
+    const label* node = &cornerNodes()[voidCornerStart_[k]];
     const label K = voidCornerStart_[k + 1] - voidCornerStart_[k];
     const vector2D& o = x[node[0]];
     scalar twiceA = 0;
@@ -639,7 +639,8 @@ void Foam::crackNetwork::beginStep
         vector2D nrm;
         jointGeometry
         (
-            cvJoint_[i], x, V0_[i], L, nrm, open0_[2*i], open0_[2*i + 1]
+            topo_.jointNodes()[cvJoint_[i]], x, V0_[i], L, nrm, open0_[2*i],
+            open0_[2*i + 1]
         );
         Gamma_[i] = g.rho()[i]*sqr(g.c()[i])/g.p()[i];
         const ductNetwork::content c = g.contentOf(i);
@@ -703,7 +704,7 @@ void Foam::crackNetwork::jointFields
         const label j = cvJoint_[i];
         scalar V, L, g0, g1;
         vector2D n;
-        jointGeometry(j, x, V, L, n, g0, g1);
+        jointGeometry(topo_.jointNodes()[j], x, V, L, n, g0, g1);
         label k = first;
         values[k++][j] = 1;
         values[k++][j] = gas_.p()[i];
@@ -800,7 +801,7 @@ void Foam::crackNetwork::updateForces
     {
         jointGeometry
         (
-            cvJoint_[i], x, V_[i], L_[i], n_[i], openNow_[2*i],
+            cvNodes(i), x, V_[i], L_[i], n_[i], openNow_[2*i],
             openNow_[2*i + 1]
         );
         floored_[i] = V_[i] <= 0.5*L_[i]*a*(1 + SMALL);
@@ -843,7 +844,7 @@ void Foam::crackNetwork::updateForces
         // unphysical stops the run (ductNetwork::addEnergy)
         p_[i] = pathPressure(i, aVNow_[i]/V_[i], &KLast_[i]);
         VLast_[i] = V_[i];
-        const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
+        const jointNodeList& jn = cvNodes(i);
         FixedList<vector2D, 4> fNew(Zero);
         gapForces(jn, x, floored_[i], &openNow_[2*i], p_[i], fNew);
         FixedList<vector2D, 4>& last = nodeForce_[i];
@@ -855,6 +856,7 @@ void Foam::crackNetwork::updateForces
     }
     // A void's corners: the mean pressure of the volumes sharing it times
     // its area's gradient (each share pushes with its own pressure)
+    const labelList& corner = cornerNodes();
     for (const label k : activeVoids())
     {
         const label c0 = voidCVStart_[k], c1 = voidCVStart_[k + 1];
@@ -864,8 +866,7 @@ void Foam::crackNetwork::updateForces
         for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
         {
             const vector2D f = P*voidGrad_[c];
-            nodeForces[voidNode_[c]] +=
-                f - voidForce_[c];
+            nodeForces[corner[c]] += f - voidForce_[c];
             voidForce_[c] = f;
         }
     }
@@ -937,7 +938,7 @@ Foam::scalar Foam::crackNetwork::stableSubStep
         const scalar V = V_[i], L = L_[i], p = p_[i];
         const vector2D& n = n_[i];
         const scalar k = Gamma_[i]*p*L*L/(4*V);
-        const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
+        const jointNodeList& jn = cvNodes(i);
         scalar im = 0;
         for (const label node : jn) im = max(im, invMass[node]);
         if (k*im > 0)
@@ -965,6 +966,7 @@ Foam::scalar Foam::crackNetwork::stableSubStep
     // G_c.delta/m, the pressure of share j by Gamma_j p_j of that over
     // V_j, the force by G_c/m of that; and no share changes by more than
     // 5 % in a sub-step
+    const labelList& corner = cornerNodes();
     for (const label k : activeVoids())
     {
         if (!(voidArea_[k] > 0)) continue;
@@ -980,7 +982,7 @@ Foam::scalar Foam::crackNetwork::stableSubStep
         scalar g2im = 0, rate = 0;
         for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
         {
-            const label node = voidNode_[c];
+            const label node = corner[c];
             g2im = max(g2im, magSqr(voidGrad_[c])*invMass[node]);
             rate += voidGrad_[c] & v[node];
         }
@@ -1112,6 +1114,53 @@ Foam::label Foam::crackNetwork::cvRank
 void Foam::crackNetwork::unrestrict()
 {
     restricted_ = false;
+    localNodes_ = false;
+}
+
+
+void Foam::crackNetwork::readLocal
+(
+    const labelUList& read,
+    const labelUList& local
+)
+{
+    if (!restricted_ || read.size() != local.size())
+    {
+        FatalErrorInFunction
+            << "local numbering of " << local.size() << " of " << read.size()
+            << " read nodes" << (restricted_ ? "" : " without restrictTo")
+            << exit(FatalError);
+    }
+    // (read is ascending: restrictTo)
+    auto localOf = [&](const label node)
+    {
+        const label* it = std::lower_bound(read.cbegin(), read.cend(), node);
+        const label l =
+            it != read.cend() && *it == node ? local[it - read.cbegin()] : -1;
+        if (l < 0)
+        {
+            FatalErrorInFunction
+                << "node " << node << " of the crack network is not in the"
+                << " local solid" << exit(FatalError);
+        }
+        return l;
+    };
+    subNodes_.setSize(cvJoint_.size());
+    for (const label i : subCVs_)
+    {
+        const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
+        for (label k = 0; k < 4; ++k) subNodes_[i][k] = localOf(jn[k]);
+    }
+    subVoidNode_.setSize(voidNode_.size());
+    subVoidNode_ = -1;
+    for (const label k : areaVoids_)
+    {
+        for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
+        {
+            subVoidNode_[c] = localOf(voidNode_[c]);
+        }
+    }
+    localNodes_ = true;
 }
 
 
@@ -1159,7 +1208,7 @@ void Foam::crackNetwork::addWork(const UList<vector2D>& d)
 {
     for (const label i : activeCVs())
     {
-        const jointNodeList& jn = topo_.jointNodes()[cvJoint_[i]];
+        const jointNodeList& jn = cvNodes(i);
         FixedList<vector2D, 4>& last = dLast_[i];
         vector2D dd[4];
         for (label k = 0; k < 4; ++k)
@@ -1173,12 +1222,13 @@ void Foam::crackNetwork::addWork(const UList<vector2D>& d)
     }
     // A void's forces (P G_c on its corners, P the mean of its shares'
     // pressures) did P dA, dA = sum G_c.dd_c: each share pays p_j/m dA
+    const labelList& corner = cornerNodes();
     for (const label k : activeVoids())
     {
         scalar dA = 0;
         for (label c = voidCornerStart_[k]; c < voidCornerStart_[k + 1]; ++c)
         {
-            const vector2D& dn = d[voidNode_[c]];
+            const vector2D& dn = d[corner[c]];
             dA += voidGrad_[c] & (dn - voidDLast_[c]);
             voidDLast_[c] = dn;
         }
@@ -1204,7 +1254,11 @@ Foam::scalar Foam::crackNetwork::endStep
     {
         scalar L;
         vector2D n;
-        jointGeometry(cvJoint_[i], x, g.V1[i], L, n, open1[2*i], open1[2*i + 1]);
+        jointGeometry
+        (
+            topo_.jointNodes()[cvJoint_[i]], x, g.V1[i], L, n, open1[2*i],
+            open1[2*i + 1]
+        );
         g.V0[i] = V0_[i];
         // Axis along A's face: n = (dy, -dx)/L, so the axis is (-n.y, n.x)
         g.axis[i] = vector(-n.y(), n.x(), 0);
