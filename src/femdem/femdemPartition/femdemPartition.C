@@ -198,11 +198,7 @@ void Foam::femdemPartition::setExchange()
     const labelList& owner = owner_;
     const label me = Pstream::myProcNo();
     const label nProcs = Pstream::nProcs();
-    labelList globalToLocal(nGlobal_, -1);
-    forAll(globalTriangle_, t)
-    {
-        globalToLocal[globalTriangle_[t]] = t;
-    }
+    const labelList& globalToLocal = localTriangle_;
 
     // What each rank needs from each owner (global indices, ascending)
     List<DynamicList<label>> need(nProcs);
@@ -325,6 +321,12 @@ void Foam::femdemPartition::build(const UList<vector2D>& x)
         ++t;
     }
     nOwned_ = std::count(owned_.begin(), owned_.end(), true);
+    localTriangle_.setSize(nGlobal_);
+    localTriangle_ = -1;
+    forAll(globalTriangle_, t)
+    {
+        localTriangle_[globalTriangle_[t]] = t;
+    }
 
     mesh_ = solidMeshRenumber::subset(globalMesh_, globalTriangle_);
     // A local part never becomes the active solid (function objects read
@@ -781,15 +783,10 @@ Foam::labelList Foam::femdemPartition::localNodes
     labelList local(globalNodes.size(), -1);
     forAll(globalNodes, i)
     {
-        const label g = globalNodes[i]/3;
-        const label* it = std::lower_bound
-        (
-            globalTriangle_.cbegin(), globalTriangle_.cend(), g
-        );
-        if (it != globalTriangle_.cend() && *it == g)
+        const label t = localTriangle_[globalNodes[i]/3];
+        if (t >= 0)
         {
-            local[i] = 3*label(it - globalTriangle_.cbegin())
-              + globalNodes[i]%3;
+            local[i] = 3*t + globalNodes[i]%3;
         }
     }
     return local;
@@ -862,7 +859,8 @@ std::size_t Foam::femdemPartition::globalBytes() const
       + bytes(globalTopo_.boundaryTriangle()) + bytes(globalTopo_.boundaryEdge())
       + bytes(globalTopo_.boundaryPatch()) + bytes(globalTopo_.nodeVertex())
       + bytes(globalTopo_.initialPoints()) + bytes(owner_)
-      + bytes(globalTriangle_) + bytes(owned_) + bytes(x0_);
+      + bytes(globalTriangle_) + bytes(localTriangle_) + bytes(owned_)
+      + bytes(x0_);
     for (const labelList& tris : pointTriangles_)
     {
         b += sizeof(tris) + bytes(tris);

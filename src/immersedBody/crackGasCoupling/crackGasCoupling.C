@@ -530,9 +530,8 @@ class partitionedSubSteps
     const femdemPartition& partition_;
     femdemSolid& copy_;
     //- Every read node in the local solid on every rank: the network
-    //  reads the local solid (read_, local_: global and local numbers)
+    //  reads the local solid
     bool direct_;
-    labelList read_, local_;
     //- Otherwise, the read nodes this rank takes from its local solid:
     //  global and local numbers
     labelList ownGlobal_, ownLocal_;
@@ -597,7 +596,7 @@ class partitionedSubSteps
             // the work displacement zero in both), then the local solid's
             // forces start from the other forces
             net_.beginStep(copy_.x(), copy_.workDisplacement());
-            net_.readLocal(read_, local_);
+            net_.readLocal(partition_.localTriangles());
             const labelList& g = partition_.globalTriangles();
             forAll(g, t)
             {
@@ -641,8 +640,6 @@ public:
         if (allLocal)
         {
             direct_ = true;
-            read_ = read;
-            local_ = local;
             return;
         }
         DynamicList<label> og, ol, fg, fl, notMine;

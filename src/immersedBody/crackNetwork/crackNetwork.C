@@ -1118,32 +1118,24 @@ void Foam::crackNetwork::unrestrict()
 }
 
 
-void Foam::crackNetwork::readLocal
-(
-    const labelUList& read,
-    const labelUList& local
-)
+void Foam::crackNetwork::readLocal(const labelUList& localTriangle)
 {
-    if (!restricted_ || read.size() != local.size())
+    if (!restricted_)
     {
         FatalErrorInFunction
-            << "local numbering of " << local.size() << " of " << read.size()
-            << " read nodes" << (restricted_ ? "" : " without restrictTo")
-            << exit(FatalError);
+            << "local numbering without restrictTo" << exit(FatalError);
     }
-    // (read is ascending: restrictTo)
+    // Node k of a triangle is node 3 t + k of the solid it is in
     auto localOf = [&](const label node)
     {
-        const label* it = std::lower_bound(read.cbegin(), read.cend(), node);
-        const label l =
-            it != read.cend() && *it == node ? local[it - read.cbegin()] : -1;
-        if (l < 0)
+        const label t = localTriangle[node/3];
+        if (t < 0)
         {
             FatalErrorInFunction
                 << "node " << node << " of the crack network is not in the"
                 << " local solid" << exit(FatalError);
         }
-        return l;
+        return 3*t + node%3;
     };
     subNodes_.setSize(cvJoint_.size());
     for (const label i : subCVs_)
