@@ -154,12 +154,14 @@ Foam::labelList Foam::femdemPartition::haloTriangles
             cellTris[fill[iy*nx + ix]++] = t;
         }
     }
-    forAll(tris, t)
+    // The gap to the nearest owned box (the larger of its x and y gaps),
+    // looked for until one within haloWidth/2 is found
+    auto ownedGap = [&](const label t)
     {
-        if (owner[t] == me || inHalo[t]) continue;
         label ix, iy;
         cellOf(t, ix, iy);
         const box& a = boxes[t];
+        scalar d = GREAT;
         for (label jy = max(iy - 1, 0); jy <= min(iy + 1, ny - 1); ++jy)
         {
             for (label jx = max(ix - 1, 0); jx <= min(ix + 1, nx - 1); ++jx)
@@ -168,17 +170,38 @@ Foam::labelList Foam::femdemPartition::haloTriangles
                 for (label i = cellStart[c]; i < cellStart[c + 1]; ++i)
                 {
                     const box& b = boxes[cellTris[i]];
-                    const vector2D gap =
-                        max(a.lo - b.hi, b.lo - a.hi);
-                    if (gap.x() <= haloWidth_ && gap.y() <= haloWidth_)
-                    {
-                        inHalo[t] = true;
-                        break;
-                    }
+                    d = min(d, cmptMax(max(a.lo - b.hi, b.lo - a.hi)));
+                    if (d <= 0.5*haloWidth_) return d;
                 }
-                if (inHalo[t]) break;
             }
-            if (inHalo[t]) break;
+        }
+        return d;
+    };
+    // A triangle within haloWidth/2 can touch an owned one before the next
+    // rebuild; if it has a free face it is then a contact partner, so its
+    // free faces must be the whole solid's: its edge neighbours are in the
+    // halo too, with the joints between them (a triangle at the halo's
+    // outer edge has free faces the whole solid does not have). With the
+    // default haloWidth (2 x the longest edge) they are already within it
+    List<bool> near(nTri, false);
+    forAll(tris, t)
+    {
+        if (owner[t] == me) continue;
+        const scalar d = ownedGap(t);
+        inHalo[t] = inHalo[t] || d <= haloWidth_;
+        near[t] = d <= 0.5*haloWidth_;
+    }
+    const labelList& edgeJoint = globalTopo_.edgeJoint();
+    forAll(tris, t)
+    {
+        if (!near[t]) continue;
+        for (label k = 0; k < 3; ++k)
+        {
+            const label j = edgeJoint[3*t + k];
+            if (j < 0) continue;
+            const label tA = globalTopo_.jointTriangleA()[j];
+            const label n = tA == t ? globalTopo_.jointTriangleB()[j] : tA;
+            if (owner[n] != me) inHalo[n] = true;
         }
     }
 
