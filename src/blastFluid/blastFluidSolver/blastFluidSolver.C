@@ -238,7 +238,7 @@ void Foam::blastFluidSolver::updateBurn(const scalar t)
         burnL_[f] = F[addr_.own()[f]];
         burnR_[f] = f < addr_.nInternal() ? F[addr_.nei()[f]] : burnL_[f];
     }
-    coupledNeighbourValues(burn_->burnFraction(), burnNbr_);
+    addr_.coupledNeighbourValues(burn_->burnFraction(), burnNbr_);
     forAll(addr_.coupledFace(), j)
     {
         if (addr_.coupledFace()[j])
@@ -1648,8 +1648,6 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     anyLowOrder_(false),
     addr_(mesh, U_),
     cutCells_(false),
-    lostMass_(0),
-    lostEnergy_(0),
     stepOutMass_(0),
     stepOutEnergy_(0),
     outMass_(0),

@@ -30,27 +30,13 @@ Description
 
     Small cells (phi1 < 1/2) would limit the time step; after every stage
     their content is merged with their open face neighbours by weighted
-    state redistribution (Berger & Giuliani): neighbourhood N_i = i and the
-    neighbours j across faces with a_f > 0 and phi1_j > 0; every cell j
-    belongs to N_j = 1 + (number of small neighbours whose neighbourhood
-    holds it) neighbourhoods and gives each 1/N_j of its volume and content;
-    a neighbourhood's state is its content over its volume; a cell's final
-    state is the mean of the states of the neighbourhoods it belongs to.
-    Conservative to round-off, exact for uniform states, and a convex
-    combination (positive density and internal energy if the neighbourhood
-    content is). A cell that vanishes in the step (phi1 = 0) is a small
-    cell without volume: its content goes to its neighbourhood; if that
-    has no volume either (a pocket crushed among closed cells), to the
-    nearest cells with gas, up to 4 rings of face neighbours away, by gas
-    volume (conservative; lost and reported only beyond that or behind a
-    processor face). A pass works on the small cells, the cells across
-    their faces and the cells on coupled faces only (every other cell is
-    its own neighbourhood and keeps its content): its cost is that of the
-    cut cells, not of the mesh. The same
-    merging handles cells that open or close between steps
-    (setFluidFraction). Every quantity across a processor face is computed
-    from values exchanged through the coupled patches: a decomposed run
-    gives the serial answer.
+    state redistribution (Berger & Giuliani; smallCellRedistribution, where
+    the neighbourhoods, the deficient and closed passes and the orphans are
+    described). The same merging handles cells that open or close between
+    steps (setFluidFraction), the wall work's correction (addEnergy) and
+    gas handed to small cells (addContent). Every quantity across a
+    processor face is computed from values exchanged through the coupled
+    patches: a decomposed run gives the serial answer.
 
 \*---------------------------------------------------------------------------*/
 
@@ -59,29 +45,6 @@ Description
 #include "calculatedFvPatchFields.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-template<class Type>
-void Foam::blastFluidSolver::coupledNeighbourValues
-(
-    const GeometricField<Type, fvPatchField, volMesh>& field,
-    Field<Type>& values
-) const
-{
-    values.setSize(addr_.nFaces() - addr_.nInternal());
-    values = Zero;
-    forAll(addr_.kinds(), patchi)
-    {
-        if (addr_.kinds()[patchi] != blastFaceAddressing::COUPLED) continue;
-        const tmp<Field<Type>> tnbr =
-            field.boundaryField()[patchi].patchNeighbourField();
-        const Field<Type>& nbr = tnbr();
-        forAll(nbr, j)
-        {
-            values[addr_.patchStart()[patchi] - addr_.nInternal() + j] = nbr[j];
-        }
-    }
-}
-
 
 void Foam::blastFluidSolver::scaleFluxes(const scalarField& phif)
 {
@@ -269,391 +232,19 @@ void Foam::blastFluidSolver::stateFromContent
 }
 
 
-void Foam::blastFluidSolver::redistribute
-(
-    const volScalarField& phiField,
-    conservedFields& c,
-    const boolList* force,
-    const bool forcedOnly
-)
+Foam::smallCellRedistribution& Foam::blastFluidSolver::srd()
 {
     if (!srd_.valid())
     {
-        srd_.reset(new cutCellFields(mesh_));
-    }
-    redistributePass
-    (
-        phiField, c, force, forcedOnly
-    );
-    const label maxExtraPasses = 3;
-    for (label pass = 0; pass <= maxExtraPasses; ++pass)
-    {
-        if (!markDeficientNeighbourhoods(phiField.primitiveField()))
-        {
-            break;
-        }
-        if (pass == maxExtraPasses)
-        {
-            // Pockets still short of gas: a gap between fragments inside a
-            // cell, open to none of its faces, next to gas across them (the
-            // sub-cell crack joins them). Kept alone, such a pocket is
-            // crushed within one step (1.2e15 Pa at 1.4e-4 of a cell in the
-            // fragmenting tube) and its wall force flings the fragments;
-            // merged, it takes its neighbours' state (mass, momentum and
-            // energy conserved)
-            cutCellFields& w = srd_();
-            forAll(w.extra, i)
-            {
-                w.extra[i] = w.deficient[i] > 0;
-            }
-            closedLinks_ = true;
-        }
-        redistributePass
+        srd_.reset
         (
-            phiField, c, &srd_->extra, true
+            new smallCellRedistribution
+            (
+                mesh_, addr_, threePhase_ ? 9 : multiPhase_ ? 7 : 5
+            )
         );
-        closedLinks_ = false;
     }
-}
-
-
-bool Foam::blastFluidSolver::markDeficientNeighbourhoods
-(
-    const scalarField& phi
-)
-{
-    cutCellFields& w = srd_();
-    const scalarField& small = w.small.primitiveField();
-    const scalarField& V = mesh_.V();
-    scalarField& deficient = w.deficient.primitiveFieldRef();
-    bool any = false;
-    forAll(deficient, i)
-    {
-        const bool d = small[i] > 0 && w.sumVolume[i] < 0.5*V[i];
-        deficient[i] = d ? 1 : 0;
-        w.extra[i] = d;
-        any = any || d;
-    }
-    if (!returnReduce(any, orOp<bool>()))
-    {
-        return false;
-    }
-    w.deficient.correctBoundaryConditions();
-    scalarField& deficientNbr = w.deficientNbr;
-    coupledNeighbourValues(w.deficient, deficientNbr);
-    // (a deficient cell is small: its faces are active)
-    for (const label f : w.activeFaces)
-    {
-        const label P = addr_.own()[f], N = addr_.nei()[f];
-        if (deficient[P] > 0 && srdLink(f, small[P], phi[N])) w.extra[N] = true;
-        if (deficient[N] > 0 && srdLink(f, small[N], phi[P])) w.extra[P] = true;
-    }
-    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
-    {
-        const label b = cf - addr_.nInternal(), P = addr_.own()[cf];
-        if (deficientNbr[b] > 0 && srdLink(cf, w.smallNbr[b], phi[P]))
-        {
-            w.extra[P] = true;
-        }
-    }
-    return true;
-}
-
-
-void Foam::blastFluidSolver::redistributePass
-(
-    const volScalarField& phiField,
-    conservedFields& c,
-    const boolList* force,
-    const bool forcedOnly
-)
-{
-    cutCellFields& w = srd_();
-    const scalarField& phi = phiField.primitiveField();
-    scalarField& cRho = c.rho;
-    vectorField& cRhoU = c.rhoU;
-    scalarField& cRhoE = c.rhoE;
-    scalarField& cAlpha = c.alpha;
-    scalarField& cAlphaRho1 = c.alphaRho1;
-
-    // Small cells: less than half open or closing with gas in them, and
-    // the cells in 'force' (new ones); with forcedOnly those only
-    scalarField& small = w.small.primitiveFieldRef();
-    // (a cell without volume that holds content is always small: its
-    // content must go somewhere)
-    forAll(small, i)
-    {
-        const bool forced = force && (*force)[i];
-        const bool candidate = forced || (!forcedOnly && phi[i] < 0.5);
-        const bool content = cRho[i] != 0 || cRhoE[i] != 0;
-        small[i] =
-            (candidate && phi[i] > 0) || (phi[i] <= 0 && content) ? 1 : 0;
-    }
-    w.small.correctBoundaryConditions();
-    coupledNeighbourValues(w.small, w.smallNbr);
-    coupledNeighbourValues(phiField, w.phiNbr);
-    w.setActive(mesh_, small);
-
-    countNeighbourhoods(phi);
-    if (!returnReduce(max(small) > 0, orOp<bool>()))
-    {
-        return;
-    }
-
-    // The content components: mass, momentum, energy (material 1, and
-    // material 2 of three)
-    const label nComp = threePhase_ ? 9 : multiPhase_ ? 7 : 5;
-    auto component = [&](const label k, const label i) -> scalar&
-    {
-        switch (k)
-        {
-            case 0: return cRho[i];
-            case 1: return cRhoU[i].x();
-            case 2: return cRhoU[i].y();
-            case 3: return cRhoU[i].z();
-            case 4: return cRhoE[i];
-            case 5: return cAlphaRho1[i];
-            case 6: return cAlpha[i];
-            case 7: return c.alphaRho2[i];
-            default: return c.alpha2[i];
-        }
-    };
-
-    // Every cell's share of volume and content per neighbourhood
-    const scalarField& V = mesh_.V();
-    const scalarField& count = w.count.primitiveField();
-    scalarField& vol = w.volume.primitiveFieldRef();
-    UPtrList<scalarField> share(w.shareValues(nComp));
-    for (const label i : w.activeCells)
-    {
-        const scalar s = V[i]/count[i];
-        vol[i] = phi[i]*s;
-        for (label k = 0; k < nComp; ++k)
-        {
-            share[k][i] = component(k, i)*s;
-        }
-    }
-    w.count.correctBoundaryConditions();
-    w.volume.correctBoundaryConditions();
-    w.evaluateShares(nComp);
-    neighbourhoodStates(phi, nComp);
-
-    // A cell's state: the mean of the states of its neighbourhoods
-    w.evaluateShares(nComp);
-    gatherNeighbourhoods(phi, nComp, true);
-    for (const label i : w.activeCells)
-    {
-        const scalar s = phi[i]/count[i];
-        for (label k = 0; k < nComp; ++k)
-        {
-            component(k, i) = s*w.sum[k][i];
-        }
-    }
-    depositOrphans(phi, nComp, component);
-}
-
-
-template<class Component>
-void Foam::blastFluidSolver::depositOrphans
-(
-    const scalarField& phi,
-    const label nComp,
-    const Component& component
-)
-{
-    // A cell that closes among closed cells (a pocket crushed between
-    // fragments, a sliver whose neighbours closed in the same step) has no
-    // neighbourhood: its content goes to the gas nearest to it, the cells
-    // with gas in the first ring of face neighbours that has any (up to
-    // maxRings), in proportion to their gas volumes. Mass, momentum and
-    // energy are conserved; only beyond maxRings (or behind a processor
-    // face) is the content lost, and reported
-    const label maxRings = 4;
-    cutCellFields& w = srd_();
-    const labelListList& cellCells = mesh_.cellCells();
-    const scalarField& V = mesh_.V();
-    forAll(w.orphans, o)
-    {
-        const label seed = w.orphans[o];
-        const FixedList<scalar, cutCellFields::maxComponents>& c =
-            w.orphanContent[o];
-        ++w.searchStamp;
-        w.searchMark[seed] = w.searchStamp;
-        w.ring.clear();
-        w.ring.append(seed);
-        scalar gasVolume = 0;
-        for (label r = 0; r < maxRings && gasVolume <= 0; ++r)
-        {
-            w.nextRing.clear();
-            for (const label i : w.ring)
-            {
-                for (const label j : cellCells[i])
-                {
-                    if (w.searchMark[j] == w.searchStamp) continue;
-                    w.searchMark[j] = w.searchStamp;
-                    w.nextRing.append(j);
-                    if (phi[j] > 0) gasVolume += phi[j]*V[j];
-                }
-            }
-            w.ring.transfer(w.nextRing);
-        }
-        if (gasVolume <= 0)
-        {
-            lostMass_ += c[0];
-            lostEnergy_ += c[4];
-            continue;
-        }
-        for (const label j : w.ring)
-        {
-            if (phi[j] <= 0) continue;
-            // Content per cell volume: C w_j/V_j, w_j = phi_j V_j/sum
-            const scalar s = phi[j]/gasVolume;
-            for (label k = 0; k < nComp; ++k)
-            {
-                component(k, j) += s*c[k];
-            }
-        }
-    }
-    w.orphans.clear();
-    w.orphanContent.clear();
-}
-
-
-void Foam::blastFluidSolver::countNeighbourhoods(const scalarField& phi)
-{
-    cutCellFields& w = srd_();
-    const scalarField& small = w.small.primitiveField();
-    scalarField& count = w.count.primitiveFieldRef();
-    for (const label i : w.activeCells)
-    {
-        count[i] = 1;
-    }
-    for (const label f : w.activeFaces)
-    {
-        const label P = addr_.own()[f], N = addr_.nei()[f];
-        if (srdLink(f, small[P], phi[N])) count[N] += 1;
-        if (srdLink(f, small[N], phi[P])) count[P] += 1;
-    }
-    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
-    {
-        const label b = cf - addr_.nInternal(), P = addr_.own()[cf];
-        if (srdLink(cf, w.smallNbr[b], phi[P])) count[P] += 1;
-    }
-}
-
-
-void Foam::blastFluidSolver::gatherNeighbourhoods
-(
-    const scalarField& phi,
-    const label nComp,
-    const bool intoMembers
-)
-{
-    // Sums over the neighbourhood of each small cell (its own share and
-    // those of the neighbours it links to: intoMembers false) or over the
-    // neighbourhoods each cell belongs to (intoMembers true)
-    cutCellFields& w = srd_();
-    const scalarField& small = w.small.primitiveField();
-    for (label k = 0; k < nComp; ++k)
-    {
-        const scalarField& sh = w.share[k].primitiveField();
-        scalarField& sk = w.sum[k];
-        for (const label i : w.activeCells)
-        {
-            sk[i] = sh[i];
-        }
-        coupledNeighbourValues(w.share[k], w.shareNbr[k]);
-    }
-    if (!intoMembers)
-    {
-        const scalarField& vol = w.volume.primitiveField();
-        for (const label i : w.activeCells)
-        {
-            w.sumVolume[i] = vol[i];
-        }
-        coupledNeighbourValues(w.volume, w.volumeNbr);
-    }
-
-    auto add = [&](const label a, const label b)
-    {
-        if (!intoMembers) w.sumVolume[a] += w.volume[b];
-        for (label k = 0; k < nComp; ++k)
-        {
-            w.sum[k][a] += w.share[k][b];
-        }
-    };
-    for (const label f : w.activeFaces)
-    {
-        const label P = addr_.own()[f], N = addr_.nei()[f];
-        if (intoMembers)
-        {
-            if (srdLink(f, small[P], phi[N])) add(N, P);
-            if (srdLink(f, small[N], phi[P])) add(P, N);
-        }
-        else
-        {
-            if (srdLink(f, small[P], phi[N])) add(P, N);
-            if (srdLink(f, small[N], phi[P])) add(N, P);
-        }
-    }
-    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
-    {
-        const label b = cf - addr_.nInternal(), P = addr_.own()[cf];
-        const bool linked =
-            intoMembers
-          ? srdLink(cf, w.smallNbr[b], phi[P])
-          : srdLink(cf, small[P], w.phiNbr[b]);
-        if (linked)
-        {
-            if (!intoMembers) w.sumVolume[P] += w.volumeNbr[b];
-            for (label k = 0; k < nComp; ++k)
-            {
-                w.sum[k][P] += w.shareNbr[k][b];
-            }
-        }
-    }
-}
-
-
-void Foam::blastFluidSolver::neighbourhoodStates
-(
-    const scalarField& phi,
-    const label nComp
-)
-{
-    // Neighbourhood states (per unit gas volume) replace the shares; a
-    // closing cell without a neighbourhood goes to depositOrphans
-    gatherNeighbourhoods(phi, nComp, false);
-    cutCellFields& w = srd_();
-    const scalarField& small = w.small.primitiveField();
-    const scalarField& count = w.count.primitiveField();
-    UPtrList<scalarField> share(w.shareValues(nComp));
-    for (const label i : w.activeCells)
-    {
-        if (w.sumVolume[i] > 0)
-        {
-            const scalar r = 1/w.sumVolume[i];
-            for (label k = 0; k < nComp; ++k)
-            {
-                share[k][i] = r*w.sum[k][i];
-            }
-        }
-        else if (small[i] > 0)
-        {
-            // The shares are content V/count: kept for depositOrphans
-            FixedList<scalar, cutCellFields::maxComponents> c(Zero);
-            for (label k = 0; k < nComp; ++k)
-            {
-                c[k] = share[k][i]*count[i];
-            }
-            w.orphans.append(i);
-            w.orphanContent.append(c);
-            for (label k = 0; k < nComp; ++k)
-            {
-                share[k][i] = 0;
-            }
-        }
-    }
+    return srd_();
 }
 
 
@@ -666,16 +257,16 @@ void Foam::blastFluidSolver::fillEmptyCells()
     fluidFractionPtr_->correctBoundaryConditions();
     scalarField rhoB, rhoEB, phiB, alphaB, ar1B;
     vectorField rhoUB;
-    coupledNeighbourValues(rho_, rhoB);
-    coupledNeighbourValues(rhoU_, rhoUB);
-    coupledNeighbourValues(rhoE_, rhoEB);
-    coupledNeighbourValues(fluidFractionPtr_(), phiB);
+    addr_.coupledNeighbourValues(rho_, rhoB);
+    addr_.coupledNeighbourValues(rhoU_, rhoUB);
+    addr_.coupledNeighbourValues(rhoE_, rhoEB);
+    addr_.coupledNeighbourValues(fluidFractionPtr_(), phiB);
     if (multiPhase_)
     {
         alpha1Ptr_->correctBoundaryConditions();
         alphaRho1Ptr_->correctBoundaryConditions();
-        coupledNeighbourValues(alpha1Ptr_(), alphaB);
-        coupledNeighbourValues(alphaRho1Ptr_(), ar1B);
+        addr_.coupledNeighbourValues(alpha1Ptr_(), alphaB);
+        addr_.coupledNeighbourValues(alphaRho1Ptr_(), ar1B);
     }
 
     // Mean of the open neighbours with gas, weighted by their fluid
@@ -753,8 +344,8 @@ void Foam::blastFluidSolver::fillEmptyCellsField(volScalarField& fld)
     const scalarField& phi = fluidFractionPtr_->primitiveField();
     fld.correctBoundaryConditions();
     scalarField nbr, phiB;
-    coupledNeighbourValues(fld, nbr);
-    coupledNeighbourValues(fluidFractionPtr_(), phiB);
+    addr_.coupledNeighbourValues(fld, nbr);
+    addr_.coupledNeighbourValues(fluidFractionPtr_(), phiB);
     scalarField& v = fld.primitiveFieldRef();
     const label nCells = mesh_.nCells();
     scalarField w(nCells, 0), sum(nCells, 0);
@@ -885,12 +476,7 @@ void Foam::blastFluidSolver::mergeBadCells
         {
             return;
         }
-        burnLinks_ = false;
-        redistribute
-        (
-            phiField, c, &bad, true
-        );
-        burnLinks_ = true;
+        srd().redistribute(phiField, c, srdLinks(false), &bad, true);
     }
 }
 
@@ -936,7 +522,7 @@ bool Foam::blastFluidSolver::cutCellStage
         );
     }
 
-    redistribute(phiEndPtr_(), cut_, &newCell_);
+    srd().redistribute(phiEndPtr_(), cut_, srdLinks(), &newCell_);
     mergeBadCells(phiEndPtr_(), cut_);
     stateFromContent(phiEndPtr_->primitiveField(), cut_);
     return true;
@@ -965,7 +551,7 @@ void Foam::blastFluidSolver::advanceCutCells(const scalar dt)
         start_.alpha2 = alpha2Ptr_->primitiveField();
         start_.alphaRho2 = alphaRho2Ptr_->primitiveField();
     }
-    const scalar lostMass0 = lostMass_, lostEnergy0 = lostEnergy_;
+    const scalar lostMass0 = lostMass(), lostEnergy0 = lostEnergy();
 
     lowOrder_.primitiveFieldRef() = 0;
     anyLowOrder_ = false;
@@ -1007,8 +593,7 @@ void Foam::blastFluidSolver::advanceCutCells(const scalar dt)
         }
 
         // Redo the step from its start at first order around bad cells
-        lostMass_ = lostMass0;
-        lostEnergy_ = lostEnergy0;
+        if (srd_.valid()) srd_->setLost(lostMass0, lostEnergy0);
         prepareRetry(attempt, maxAttempts);
     }
     primitivesFromConservative(true);
@@ -1039,8 +624,7 @@ void Foam::blastFluidSolver::enableCutCells(const scalarField& phi)
     wallWork_.setSize(mesh_.nCells(), 0);
     wallPressureImpulse_.setSize(mesh_.nCells(), 0);
     wallImpulse_.setSize(mesh_.nCells(), Zero);
-    lostMass_ = 0;
-    lostEnergy_ = 0;
+    if (srd_.valid()) srd_->setLost(0, 0);
     primitivesCurrent_ = false;
 }
 
@@ -1099,10 +683,7 @@ void Foam::blastFluidSolver::setFluidFraction
     {
         // The faces of the coming step decide which neighbours are open
         loadApertures(aperture);
-        redistribute
-        (
-            phiField, cut_, &changed, true
-        );
+        srd().redistribute(phiField, cut_, srdLinks(), &changed, true);
         // A cell that opened where no gas can reach it yet stays closed:
         // nothing is created; it opens in a step (a new cell)
         forAll(phi, i)
@@ -1126,14 +707,10 @@ void Foam::blastFluidSolver::setEmbeddedBoundary
     phi1Field.primitiveFieldRef() = phiEnd;
     phi1Field.correctBoundaryConditions();
     const scalarField& phi1 = phi1Field.primitiveField();
-    if (!srd_.valid())
-    {
-        srd_.reset(new cutCellFields(mesh_));
-    }
-    scalarField& phi0Nbr = srd_->phiNbr;
-    scalarField& phi1Nbr = srd_->phi1Nbr;
-    coupledNeighbourValues(fluidFractionPtr_(), phi0Nbr);
-    coupledNeighbourValues(phi1Field, phi1Nbr);
+    scalarField& phi0Nbr = phi0Nbr_;
+    scalarField& phi1Nbr = phi1Nbr_;
+    addr_.coupledNeighbourValues(fluidFractionPtr_(), phi0Nbr);
+    addr_.coupledNeighbourValues(phi1Field, phi1Nbr);
 
     // Compact faces; a face next to a cell without gas at both ends of the
     // step is closed (no gas can pass into the solid)
@@ -1198,7 +775,7 @@ void Foam::blastFluidSolver::setEmbeddedBoundary
     if (returnReduce(closed, orOp<bool>()))
     {
         phi1Field.correctBoundaryConditions();
-        coupledNeighbourValues(phi1Field, phi1Nbr);
+        addr_.coupledNeighbourValues(phi1Field, phi1Nbr);
         for (label f = 0; f < addr_.nInternal(); ++f)
         {
             const label P = addr_.own()[f], N = addr_.nei()[f];
@@ -1316,7 +893,7 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
         }
         spreadEnergy_ += rest;
     }
-    redistribute(phiField, cut_);
+    srd().redistribute(phiField, cut_, srdLinks());
 
     // The written state is the corrected one, checked now (a bad state
     // stops the run before it is written). Only the cells whose state
@@ -1402,7 +979,7 @@ void Foam::blastFluidSolver::addContent
     }
     if (returnReduce(contentTo_.found(true), orOp<bool>()))
     {
-        redistribute(phiField, q, &contentTo_, true);
+        srd().redistribute(phiField, q, srdLinks(), &contentTo_, true);
     }
     stateFromContent(phi, q);
     primitivesFromConservative(true);
