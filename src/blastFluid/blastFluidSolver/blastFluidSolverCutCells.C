@@ -250,6 +250,7 @@ Foam::smallCellRedistribution& Foam::blastFluidSolver::srd()
 
 void Foam::blastFluidSolver::fillEmptyCells()
 {
+    const scalarField& aperture = geometry_->aperture();
     const scalarField& phi = fluidFractionPtr_->primitiveField();
     rho_.correctBoundaryConditions();
     rhoU_.correctBoundaryConditions();
@@ -288,7 +289,7 @@ void Foam::blastFluidSolver::fillEmptyCells()
         multiPhase_ ? alphaRho1Ptr_->primitiveField() : rho_.primitiveField();
     for (label f = 0; f < addr_.nInternal(); ++f)
     {
-        if (aperture_[f] <= 0) continue;
+        if (aperture[f] <= 0) continue;
         const label P = addr_.own()[f], N = addr_.nei()[f];
         if (phi[P] <= 0 && phi[N] > 0)
         {
@@ -302,7 +303,7 @@ void Foam::blastFluidSolver::fillEmptyCells()
     for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
     {
         const label b = cf - addr_.nInternal(), P = addr_.own()[cf];
-        if (aperture_[cf] > 0 && phi[P] <= 0 && phiB.size() && phiB[b] > 0)
+        if (aperture[cf] > 0 && phi[P] <= 0 && phiB.size() && phiB[b] > 0)
         {
             add
             (
@@ -339,6 +340,7 @@ void Foam::blastFluidSolver::fillEmptyCells()
 
 void Foam::blastFluidSolver::fillEmptyCellsField(volScalarField& fld)
 {
+    const scalarField& aperture = geometry_->aperture();
     // fillEmptyCells for one more field: the mean of the open neighbours
     // with gas weighted by their fluid fractions
     const scalarField& phi = fluidFractionPtr_->primitiveField();
@@ -351,7 +353,7 @@ void Foam::blastFluidSolver::fillEmptyCellsField(volScalarField& fld)
     scalarField w(nCells, 0), sum(nCells, 0);
     for (label f = 0; f < addr_.nInternal(); ++f)
     {
-        if (aperture_[f] <= 0) continue;
+        if (aperture[f] <= 0) continue;
         const label P = addr_.own()[f], N = addr_.nei()[f];
         if (phi[P] <= 0 && phi[N] > 0)
         {
@@ -365,7 +367,7 @@ void Foam::blastFluidSolver::fillEmptyCellsField(volScalarField& fld)
     for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
     {
         const label b = cf - addr_.nInternal(), P = addr_.own()[cf];
-        if (aperture_[cf] > 0 && phi[P] <= 0 && phiB.size() && phiB[b] > 0)
+        if (aperture[cf] > 0 && phi[P] <= 0 && phiB.size() && phiB[b] > 0)
         {
             w[P] += phiB[b]; sum[P] += phiB[b]*nbr[b];
         }
@@ -381,7 +383,7 @@ void Foam::blastFluidSolver::fillEmptyCellsField(volScalarField& fld)
 void Foam::blastFluidSolver::addWallTerms(const label s, const scalar dt)
 {
     const scalar a = rk_->a(s), b = rk_->b(s);
-    scaleFluxes(aperture_);
+    scaleFluxes(geometry_->aperture());
     assembleResidual();
     addOutflow(s, dt);
 
@@ -396,14 +398,16 @@ void Foam::blastFluidSolver::addWallTerms(const label s, const scalar dt)
     // receives are theta times as large, so the reaction stays exact
     const scalarField& p = p_.primitiveField();
     const scalarField& V = mesh_.V();
+    const vectorField& wallVector = geometry_->wallVector();
+    const scalarField& sweptVolume = geometry_->sweptVolume();
     wallImpulse_ *= b;
     wallWork_ *= b;
     wallPressureImpulse_ *= b;
     forAll(V, i)
     {
-        if (magSqr(wallVector_[i]) == 0 && sweptVolume_[i] == 0) continue;
+        if (magSqr(wallVector[i]) == 0 && sweptVolume[i] == 0) continue;
         scalar theta = 1;
-        const scalar work = p[i]*sweptVolume_[i];
+        const scalar work = p[i]*sweptVolume[i];
         if (work > 0)
         {
             // Stage content without the wall's work, per cell volume (the
@@ -412,14 +416,14 @@ void Foam::blastFluidSolver::addWallTerms(const label s, const scalar dt)
             const scalar m = a*cutStart_.rho[i] + b*(cut_.rho[i] + dt*residual_.rho[i]);
             const vector mU =
                 a*cutStart_.rhoU[i]
-              + b*(cut_.rhoU[i] + dt*(residual_.rhoU[i] - p[i]*wallVector_[i]/V[i]));
+              + b*(cut_.rhoU[i] + dt*(residual_.rhoU[i] - p[i]*wallVector[i]/V[i]));
             const scalar E = a*cutStart_.rhoE[i] + b*(cut_.rhoE[i] + dt*residual_.rhoE[i]);
             const scalar ein = m > 0 ? E - 0.5*magSqr(mU)/m : 0;
             const scalar cost = b*work/V[i];
             theta = min(scalar(1), max(0.5*ein, scalar(0))/cost);
         }
         const scalar pw = theta*p[i];
-        const vector force = pw*wallVector_[i];
+        const vector force = pw*wallVector[i];
         residual_.rhoU[i] -= force/V[i];
         residual_.rhoE[i] -= theta*work/(dt*V[i]);
         wallImpulse_[i] += b*dt*force;
@@ -431,7 +435,7 @@ void Foam::blastFluidSolver::addWallTerms(const label s, const scalar dt)
         const scalarField& alpha = alpha1Ptr_->primitiveField();
         forAll(V, i)
         {
-            residual_.alpha[i] += alpha[i]*sweptVolume_[i]/(dt*V[i]);
+            residual_.alpha[i] += alpha[i]*sweptVolume[i]/(dt*V[i]);
         }
     }
     if (threePhase_)
@@ -439,7 +443,7 @@ void Foam::blastFluidSolver::addWallTerms(const label s, const scalar dt)
         const scalarField& alpha2 = alpha2Ptr_->primitiveField();
         forAll(V, i)
         {
-            residual_.alpha2[i] += alpha2[i]*sweptVolume_[i]/(dt*V[i]);
+            residual_.alpha2[i] += alpha2[i]*sweptVolume[i]/(dt*V[i]);
         }
     }
 }
@@ -522,7 +526,7 @@ bool Foam::blastFluidSolver::cutCellStage
         );
     }
 
-    srd().redistribute(phiEndPtr_(), cut_, srdLinks(), &newCell_);
+    srd().redistribute(phiEndPtr_(), cut_, srdLinks(), &geometry_->newCell());
     mergeBadCells(phiEndPtr_(), cut_);
     stateFromContent(phiEndPtr_->primitiveField(), cut_);
     return true;
@@ -618,36 +622,12 @@ void Foam::blastFluidSolver::enableCutCells(const scalarField& phi)
             fluidFractionPtr_()
         )
     );
-    aperture_.setSize(addr_.nFaces(), 1);
-    wallVector_.setSize(mesh_.nCells(), Zero);
-    sweptVolume_.setSize(mesh_.nCells(), 0);
+    geometry_.reset(new cutCellGeometry(mesh_, addr_));
     wallWork_.setSize(mesh_.nCells(), 0);
     wallPressureImpulse_.setSize(mesh_.nCells(), 0);
     wallImpulse_.setSize(mesh_.nCells(), Zero);
     if (srd_.valid()) srd_->setLost(0, 0);
     primitivesCurrent_ = false;
-}
-
-
-void Foam::blastFluidSolver::loadApertures
-(
-    const surfaceScalarField& aperture
-)
-{
-    for (label f = 0; f < addr_.nInternal(); ++f)
-    {
-        aperture_[f] = aperture[f];
-    }
-    forAll(addr_.kinds(), patchi)
-    {
-        if (addr_.kinds()[patchi] == blastFaceAddressing::SKIP) continue;
-        const scalarField& ap = aperture.boundaryField()[patchi];
-        const label start = addr_.patchStart()[patchi];
-        forAll(ap, j)
-        {
-            aperture_[start + j] = ap[j];
-        }
-    }
 }
 
 
@@ -682,7 +662,7 @@ void Foam::blastFluidSolver::setFluidFraction
     if (returnReduce(any, orOp<bool>()))
     {
         // The faces of the coming step decide which neighbours are open
-        loadApertures(aperture);
+        geometry_->loadApertures(aperture);
         srd().redistribute(phiField, cut_, srdLinks(), &changed, true);
         // A cell that opened where no gas can reach it yet stays closed:
         // nothing is created; it opens in a step (a new cell)
@@ -702,127 +682,10 @@ void Foam::blastFluidSolver::setEmbeddedBoundary
     const surfaceScalarField& aperture
 )
 {
-    const scalarField& phi0 = fluidFractionPtr_->primitiveField();
     volScalarField& phi1Field = phiEndPtr_();
     phi1Field.primitiveFieldRef() = phiEnd;
     phi1Field.correctBoundaryConditions();
-    const scalarField& phi1 = phi1Field.primitiveField();
-    scalarField& phi0Nbr = phi0Nbr_;
-    scalarField& phi1Nbr = phi1Nbr_;
-    addr_.coupledNeighbourValues(fluidFractionPtr_(), phi0Nbr);
-    addr_.coupledNeighbourValues(phi1Field, phi1Nbr);
-
-    // Compact faces; a face next to a cell without gas at both ends of the
-    // step is closed (no gas can pass into the solid)
-    loadApertures(aperture);
-    for (label f = 0; f < addr_.nInternal(); ++f)
-    {
-        const label P = addr_.own()[f], N = addr_.nei()[f];
-        if ((phi0[P] <= 0 && phi1[P] <= 0) || (phi0[N] <= 0 && phi1[N] <= 0))
-        {
-            aperture_[f] = 0;
-        }
-    }
-    forAll(addr_.kinds(), patchi)
-    {
-        if (addr_.kinds()[patchi] == blastFaceAddressing::SKIP) continue;
-        const label start = addr_.patchStart()[patchi];
-        const label n = aperture.boundaryField()[patchi].size();
-        for (label cf = start; cf < start + n; ++cf)
-        {
-            const label P = addr_.own()[cf], b = cf - addr_.nInternal();
-            bool shut = phi0[P] <= 0 && phi1[P] <= 0;
-            if (addr_.kinds()[patchi] == blastFaceAddressing::COUPLED)
-            {
-                shut = shut || (phi0Nbr[b] <= 0 && phi1Nbr[b] <= 0);
-            }
-            if (shut) aperture_[cf] = 0;
-        }
-    }
-
-    // A cell that opens in the step where no gas can reach it (no open
-    // face to a cell holding gas: a void inside the solid, a joint opening
-    // by elastic strain) stays closed: nothing is created; it opens once
-    // gas is next to it
-    boolList& reached = reached_;
-    reached.setSize(phi0.size());
-    reached = false;
-    for (label f = 0; f < addr_.nInternal(); ++f)
-    {
-        if (aperture_[f] <= 0) continue;
-        const label P = addr_.own()[f], N = addr_.nei()[f];
-        if (phi0[N] > 0) reached[P] = true;
-        if (phi0[P] > 0) reached[N] = true;
-    }
-    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
-    {
-        const label b = cf - addr_.nInternal();
-        if (aperture_[cf] > 0 && addr_.coupledFace()[b] && phi0Nbr[b] > 0)
-        {
-            reached[addr_.own()[cf]] = true;
-        }
-    }
-    scalarField& phi1Ref = phi1Field.primitiveFieldRef();
-    bool closed = false;
-    forAll(phi1Ref, i)
-    {
-        if (phi0[i] <= 0 && phi1Ref[i] > 0 && !reached[i])
-        {
-            phi1Ref[i] = 0;
-            closed = true;
-        }
-    }
-    if (returnReduce(closed, orOp<bool>()))
-    {
-        phi1Field.correctBoundaryConditions();
-        addr_.coupledNeighbourValues(phi1Field, phi1Nbr);
-        for (label f = 0; f < addr_.nInternal(); ++f)
-        {
-            const label P = addr_.own()[f], N = addr_.nei()[f];
-            if
-            (
-                (phi0[P] <= 0 && phi1[P] <= 0)
-             || (phi0[N] <= 0 && phi1[N] <= 0)
-            )
-            {
-                aperture_[f] = 0;
-            }
-        }
-        for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
-        {
-            const label P = addr_.own()[cf], b = cf - addr_.nInternal();
-            if
-            (
-                (phi0[P] <= 0 && phi1[P] <= 0)
-             || (addr_.coupledFace()[b] && phi0Nbr[b] <= 0 && phi1Nbr[b] <= 0)
-            )
-            {
-                aperture_[cf] = 0;
-            }
-        }
-    }
-
-    // Closure: the wall of a cell closes its open faces
-    wallVector_ = Zero;
-    for (label f = 0; f < addr_.nInternal(); ++f)
-    {
-        wallVector_[addr_.own()[f]] -= aperture_[f]*addr_.Sf()[f];
-        wallVector_[addr_.nei()[f]] += aperture_[f]*addr_.Sf()[f];
-    }
-    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
-    {
-        wallVector_[addr_.own()[cf]] -= aperture_[cf]*addr_.Sf()[cf];
-    }
-    const scalarField& V = mesh_.V();
-    newCell_.setSize(V.size());
-    forAll(V, i)
-    {
-        newCell_[i] = phi0[i] <= 0 && phi1[i] > 0;
-        // The front and back planes of a 2D mesh close each other
-        if (mesh_.nSolutionD() == 2) wallVector_[i].z() = 0;
-        sweptVolume_[i] = (phi1[i] - phi0[i])*V[i];
-        if (phi0[i] <= 0 && phi1[i] <= 0) wallVector_[i] = Zero;
-    }
+    geometry_->set(fluidFractionPtr_(), phi1Field, aperture);
 }
 
 
