@@ -203,7 +203,13 @@ void Foam::blastFluidSolver::readControls()
     caseChecks::checkInput(fluidDict_);
     // Run-time selected (entry 'limiter'); an unknown name: FatalIOError
     // naming the file, the entry and the valid names
-    limiter_ = blastLimiter::New(fluidDict_);
+    reconstruction_.reset
+    (
+        new blastReconstruction
+        (
+            mesh_, addr_, fluidDict_, threePhase_ ? 3 : multiPhase_ ? 2 : 1
+        )
+    );
 
     // Entry 'RKorder' (1, 2, 3); another value: FatalIOError naming the
     // file and the entry
@@ -825,143 +831,28 @@ void Foam::blastFluidSolver::growLowOrder()
 }
 
 
-template<class Type, class GradType>
-void Foam::blastFluidSolver::gaussGrad
-(
-    const GeometricField<Type, fvPatchField, volMesh>& phi,
-    GeometricField<GradType, fvPatchField, volMesh>& grad
-) const
-{
-    Field<GradType>& g = grad.primitiveFieldRef();
-    const Field<Type>& vf = phi.primitiveField();
-    g = Zero;
-
-    for (label f = 0; f < addr_.nInternal(); ++f)
-    {
-        const label P = addr_.own()[f], N = addr_.nei()[f];
-        const Type phif = addr_.w()[f]*vf[P] + (1 - addr_.w()[f])*vf[N];
-        const GradType s = addr_.Sf()[f]*phif;
-        g[P] += s;
-        g[N] -= s;
-    }
-    forAll(addr_.kinds(), patchi)
-    {
-        if (addr_.kinds()[patchi] == blastFaceAddressing::SKIP) continue;
-        const fvPatchField<Type>& pf = phi.boundaryField()[patchi];
-        const label start = addr_.patchStart()[patchi];
-        if (addr_.kinds()[patchi] == blastFaceAddressing::COUPLED)
-        {
-            // Processor patch fields hold the neighbour cell values:
-            // interpolate as on an internal face
-            const tmp<Field<Type>> tnbr = pf.patchNeighbourField();
-            const Field<Type>& nbr = tnbr();
-            forAll(pf, j)
-            {
-                const label cf = start + j;
-                const label P = addr_.own()[cf];
-                g[P] += addr_.Sf()[cf]*(addr_.w()[cf]*vf[P] + (1 - addr_.w()[cf])*nbr[j]);
-            }
-        }
-        else
-        {
-            forAll(pf, j)
-            {
-                const label cf = start + j;
-                g[addr_.own()[cf]] += addr_.Sf()[cf]*pf[j];
-            }
-        }
-    }
-    const scalarField& V = mesh_.V();
-    forAll(g, i)
-    {
-        g[i] /= V[i];
-    }
-    grad.correctBoundaryConditions();
-}
-
-
 void Foam::blastFluidSolver::faceStates()
 {
-    // One call of the limiter per field: its face loop is a template
-    // instantiated with its inline psi
-    const blastLimiter& limiter = limiter_();
-    if (limiter.secondOrder())
-    {
-        if (multiPhase_)
-        {
-            gaussGrad(alpha1Ptr_(), gradAlpha_());
-            gaussGrad(rho1Ptr_(), gradRho1_());
-            gaussGrad(rho2Ptr_(), gradRho2_());
-            if (threePhase_)
-            {
-                gaussGrad(alpha2Ptr_(), gradAlpha2_());
-                gaussGrad(rho3Ptr_(), gradRho3_());
-            }
-        }
-        else
-        {
-            gaussGrad(rho_, gradRho_());
-        }
-        gaussGrad(U_, gradU_());
-        gaussGrad(p_, gradP_());
-    }
-
-    const bool lo = anyLowOrder_;
-    if (threePhase_)
-    {
-        limiter.jointFaceValues
-        (
-            addr_, alpha1Ptr_(), gradAlpha_(), alpha2Ptr_(), gradAlpha2_(),
-            lowOrder_, lo, faces_.alphaL, faces_.alphaR, faces_.alpha2L,
-            faces_.alpha2R
-        );
-    }
-    else if (multiPhase_)
-    {
-        limiter.faceValues
-        (
-            addr_, alpha1Ptr_(), gradAlpha_(), lowOrder_, lo,
-            faces_.alphaL, faces_.alphaR
-        );
-    }
-    if (multiPhase_)
-    {
-        limiter.faceValues
-        (
-            addr_, rho1Ptr_(), gradRho1_(), lowOrder_, lo, rho1L_, rho1R_
-        );
-        limiter.faceValues
-        (
-            addr_, rho2Ptr_(), gradRho2_(), lowOrder_, lo, rho2L_, rho2R_
-        );
-        if (threePhase_)
-        {
-            limiter.faceValues
-            (
-                addr_, rho3Ptr_(), gradRho3_(), lowOrder_, lo, rho3L_, rho3R_
-            );
-        }
-    }
-    else
-    {
-        limiter.faceValues
-        (
-            addr_, rho_, gradRho_(), lowOrder_, lo, faces_.rhoL, faces_.rhoR
-        );
-    }
-    limiter.faceValues
+    reconstruction_->faceStates
     (
-        addr_, U_, gradU_(), lowOrder_, lo, faces_.UL, faces_.UR
-    );
-    limiter.faceValues
-    (
-        addr_, p_, gradP_(), lowOrder_, lo, faces_.pL, faces_.pR
+        {
+            rho_, U_, p_,
+            alpha1Ptr_.get(), rho1Ptr_.get(), rho2Ptr_.get(),
+            alpha2Ptr_.get(), rho3Ptr_.get()
+        },
+        lowOrder_, anyLowOrder_, faces_
     );
 }
 
 
 void Foam::blastFluidSolver::faceThermo()
 {
+    const blastReconstruction::phaseFaceDensities& ph =
+        reconstruction_->phaseDensities();
+    const scalarField& rho1L = ph.rho1L;
+    const scalarField& rho1R = ph.rho1R;
+    const scalarField& rho2L = ph.rho2L;
+    const scalarField& rho2R = ph.rho2R;
     blastFaceStates& s = faces_;
     const label n = addr_.nFaces();
 
@@ -974,15 +865,15 @@ void Foam::blastFluidSolver::faceThermo()
         for (label f = 0; f < n; ++f)
         {
             const scalar aL = s.alphaL[f], aR = s.alphaR[f];
-            const scalar m1L = aL*rho1L_[f], m1R = aR*rho1R_[f];
-            s.rhoL[f] = m1L + (1 - aL)*rho2L_[f];
-            s.rhoR[f] = m1R + (1 - aR)*rho2R_[f];
+            const scalar m1L = aL*rho1L[f], m1R = aR*rho1R[f];
+            s.rhoL[f] = m1L + (1 - aL)*rho2L[f];
+            s.rhoR[f] = m1R + (1 - aR)*rho2R[f];
             s.Y1L[f] = m1L/s.rhoL[f];
             s.Y1R[f] = m1R/s.rhoR[f];
         }
         mixture_.rhoeC2
         (
-            n, s.alphaL, rho1L_, rho2L_, s.rhoL, s.pL, workE_, workC2_,
+            n, s.alphaL, rho1L, rho2L, s.rhoL, s.pL, workE_, workC2_,
             burn_.valid() ? &burnL_ : nullptr
         );
         for (label f = 0; f < n; ++f)
@@ -992,7 +883,7 @@ void Foam::blastFluidSolver::faceThermo()
         }
         mixture_.rhoeC2
         (
-            n, s.alphaR, rho1R_, rho2R_, s.rhoR, s.pR, workE_, workC2_,
+            n, s.alphaR, rho1R, rho2R, s.rhoR, s.pR, workE_, workC2_,
             burn_.valid() ? &burnR_ : nullptr
         );
         for (label f = 0; f < n; ++f)
@@ -1438,6 +1329,14 @@ void Foam::blastFluidSolver::conservativeFromPrimitive3()
 
 void Foam::blastFluidSolver::faceThermo3()
 {
+    const blastReconstruction::phaseFaceDensities& ph =
+        reconstruction_->phaseDensities();
+    const scalarField& rho1L = ph.rho1L;
+    const scalarField& rho1R = ph.rho1R;
+    const scalarField& rho2L = ph.rho2L;
+    const scalarField& rho2R = ph.rho2R;
+    const scalarField& rho3L = ph.rho3L;
+    const scalarField& rho3R = ph.rho3R;
     blastFaceStates& s = faces_;
     const label n = addr_.nFaces();
     // The limiter bounds alpha1 and alpha2 on a face each by its
@@ -1464,10 +1363,10 @@ void Foam::blastFluidSolver::faceThermo3()
     {
         const scalar aL = s.alphaL[f], aR = s.alphaR[f];
         const scalar bL = s.alpha2L[f], bR = s.alpha2R[f];
-        const scalar m1L = aL*rho1L_[f], m1R = aR*rho1R_[f];
-        const scalar m2L = bL*rho2L_[f], m2R = bR*rho2R_[f];
-        s.rhoL[f] = m1L + m2L + (1 - aL - bL)*rho3L_[f];
-        s.rhoR[f] = m1R + m2R + (1 - aR - bR)*rho3R_[f];
+        const scalar m1L = aL*rho1L[f], m1R = aR*rho1R[f];
+        const scalar m2L = bL*rho2L[f], m2R = bR*rho2R[f];
+        s.rhoL[f] = m1L + m2L + (1 - aL - bL)*rho3L[f];
+        s.rhoR[f] = m1R + m2R + (1 - aR - bR)*rho3R[f];
         s.Y1L[f] = m1L/s.rhoL[f];
         s.Y1R[f] = m1R/s.rhoR[f];
         s.Y2L[f] = m2L/s.rhoL[f];
@@ -1475,7 +1374,7 @@ void Foam::blastFluidSolver::faceThermo3()
     }
     mixture_.rhoeC2
     (
-        n, s.alphaL, s.alpha2L, rho1L_, rho2L_, rho3L_, s.rhoL, s.pL,
+        n, s.alphaL, s.alpha2L, rho1L, rho2L, rho3L, s.rhoL, s.pL,
         workE_, workC2_, burn_.valid() ? &burnL_ : nullptr
     );
     for (label f = 0; f < n; ++f)
@@ -1485,7 +1384,7 @@ void Foam::blastFluidSolver::faceThermo3()
     }
     mixture_.rhoeC2
     (
-        n, s.alphaR, s.alpha2R, rho1R_, rho2R_, rho3R_, s.rhoR, s.pR,
+        n, s.alphaR, s.alpha2R, rho1R, rho2R, rho3R, s.rhoR, s.pR,
         workE_, workC2_, burn_.valid() ? &burnR_ : nullptr
     );
     for (label f = 0; f < n; ++f)
@@ -1714,44 +1613,6 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
             << exit(FatalError);
     }
 
-    // Gradient fields (zeroGradient; coupled patches get their own type)
-    auto makeGradS = [&](const word& name)
-    {
-        return new volVectorField
-        (
-            IOobject(name, mesh.time().timeName(), mesh),
-            mesh,
-            dimensionedVector(dimless, Zero),
-            "zeroGradient"
-        );
-    };
-    if (multiPhase_)
-    {
-        gradAlpha_.reset(makeGradS("gradAlpha"));
-        gradRho1_.reset(makeGradS("gradRho1"));
-        gradRho2_.reset(makeGradS("gradRho2"));
-        if (threePhase_)
-        {
-            gradAlpha2_.reset(makeGradS("gradAlpha2"));
-            gradRho3_.reset(makeGradS("gradRho3"));
-        }
-    }
-    else
-    {
-        gradRho_.reset(makeGradS("gradRho"));
-    }
-    gradP_.reset(makeGradS("gradP"));
-    gradU_.reset
-    (
-        new volTensorField
-        (
-            IOobject("gradU", mesh.time().timeName(), mesh),
-            mesh,
-            dimensionedTensor(dimless, Zero),
-            "zeroGradient"
-        )
-    );
-
     checkReflectivePatches();
 
     faces_.setSize(addr_.nFaces(), nTracked());
@@ -1760,14 +1621,11 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     workC2_.setSize(addr_.nFaces(), 0);
     if (multiPhase_)
     {
-        rho1L_.setSize(addr_.nFaces(), 1); rho1R_.setSize(addr_.nFaces(), 1);
-        rho2L_.setSize(addr_.nFaces(), 1); rho2R_.setSize(addr_.nFaces(), 1);
         start_.alpha.setSize(nCells); start_.alphaRho1.setSize(nCells);
         residual_.alpha.setSize(nCells); residual_.alphaRho1.setSize(nCells);
     }
     if (threePhase_)
     {
-        rho3L_.setSize(addr_.nFaces(), 1); rho3R_.setSize(addr_.nFaces(), 1);
         start_.alpha2.setSize(nCells); start_.alphaRho2.setSize(nCells);
         residual_.alpha2.setSize(nCells); residual_.alphaRho2.setSize(nCells);
     }
@@ -2018,7 +1876,7 @@ void Foam::blastFluidSolver::report(Ostream& os) const
     os  << "blastFluidSolver: " << mixture_.size() << " material(s) "
         << mixture_.materials() << nl
         << "    flux " << fluidDict_.getOrDefault<word>("flux", "HLLC")
-        << ", limiter " << limiter_->type()
+        << ", limiter " << reconstruction_->limiter().type()
         << ", SSP RK" << rk_->order()
         << ", Q-scheme " << (QActive_ ? "on" : "off");
     if (QActive_)
