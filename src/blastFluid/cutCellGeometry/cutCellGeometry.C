@@ -61,6 +61,78 @@ void Foam::cutCellGeometry::loadApertures
 }
 
 
+void Foam::cutCellGeometry::closeShutFaces
+(
+    const scalarField& phi0,
+    const scalarField& phi1
+)
+{
+    // A face next to a cell without gas at both ends of the step is closed
+    // (no gas can pass into the solid); the wall vectors of the final
+    // apertures are summed in the same pass (face by face, in the order of
+    // the compact faces)
+    const label nInternal = addr_.nInternal();
+    const labelList& own = addr_.own();
+    const labelList& nei = addr_.nei();
+    const vectorField& Sf = addr_.Sf();
+    wallVector_ = Zero;
+    for (label f = 0; f < nInternal; ++f)
+    {
+        const label P = own[f], N = nei[f];
+        if ((phi0[P] <= 0 && phi1[P] <= 0) || (phi0[N] <= 0 && phi1[N] <= 0))
+        {
+            aperture_[f] = 0;
+        }
+        wallVector_[P] -= aperture_[f]*Sf[f];
+        wallVector_[N] += aperture_[f]*Sf[f];
+    }
+    for (label cf = nInternal; cf < addr_.nFaces(); ++cf)
+    {
+        const label P = own[cf], b = cf - nInternal;
+        if
+        (
+            (phi0[P] <= 0 && phi1[P] <= 0)
+         || (
+                addr_.coupledFace()[b]
+             && phi0Nbr_[b] <= 0 && phi1Nbr_[b] <= 0
+            )
+        )
+        {
+            aperture_[cf] = 0;
+        }
+        wallVector_[P] -= aperture_[cf]*Sf[cf];
+    }
+}
+
+
+bool Foam::cutCellGeometry::reachedByGas
+(
+    const label celli,
+    const scalarField& phi0
+) const
+{
+    // An open face to a cell holding gas at the step's start (across a
+    // processor face: the neighbour's phi0)
+    const label nInternal = addr_.nInternal();
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    for (const label f : mesh_.cells()[celli])
+    {
+        if (f < nInternal)
+        {
+            const label o =
+                addr_.own()[f] == celli ? addr_.nei()[f] : addr_.own()[f];
+            if (aperture_[f] > 0 && phi0[o] > 0) return true;
+            continue;
+        }
+        const label patchi = pbm.whichPatch(f);
+        if (addr_.kinds()[patchi] != blastFaceAddressing::COUPLED) continue;
+        const label cf = addr_.patchStart()[patchi] + f - pbm[patchi].start();
+        if (aperture_[cf] > 0 && phi0Nbr_[cf - nInternal] > 0) return true;
+    }
+    return false;
+}
+
+
 void Foam::cutCellGeometry::set
 (
     const volScalarField& phi0Field,
@@ -70,66 +142,20 @@ void Foam::cutCellGeometry::set
 {
     const scalarField& phi0 = phi0Field.primitiveField();
     const scalarField& phi1 = phi1Field.primitiveField();
-    scalarField& phi0Nbr = phi0Nbr_;
-    scalarField& phi1Nbr = phi1Nbr_;
-    addr_.coupledNeighbourValues(phi0Field, phi0Nbr);
-    addr_.coupledNeighbourValues(phi1Field, phi1Nbr);
-
-    // Compact faces; a face next to a cell without gas at both ends of the
-    // step is closed (no gas can pass into the solid)
+    addr_.coupledNeighbourValues(phi0Field, phi0Nbr_);
+    addr_.coupledNeighbourValues(phi1Field, phi1Nbr_);
     loadApertures(aperture);
-    for (label f = 0; f < addr_.nInternal(); ++f)
-    {
-        const label P = addr_.own()[f], N = addr_.nei()[f];
-        if ((phi0[P] <= 0 && phi1[P] <= 0) || (phi0[N] <= 0 && phi1[N] <= 0))
-        {
-            aperture_[f] = 0;
-        }
-    }
-    forAll(addr_.kinds(), patchi)
-    {
-        if (addr_.kinds()[patchi] == blastFaceAddressing::SKIP) continue;
-        const label start = addr_.patchStart()[patchi];
-        const label n = aperture.boundaryField()[patchi].size();
-        for (label cf = start; cf < start + n; ++cf)
-        {
-            const label P = addr_.own()[cf], b = cf - addr_.nInternal();
-            bool shut = phi0[P] <= 0 && phi1[P] <= 0;
-            if (addr_.kinds()[patchi] == blastFaceAddressing::COUPLED)
-            {
-                shut = shut || (phi0Nbr[b] <= 0 && phi1Nbr[b] <= 0);
-            }
-            if (shut) aperture_[cf] = 0;
-        }
-    }
+    closeShutFaces(phi0, phi1);
 
     // A cell that opens in the step where no gas can reach it (no open
     // face to a cell holding gas: a void inside the solid, a joint opening
     // by elastic strain) stays closed: nothing is created; it opens once
-    // gas is next to it
-    boolList& reached = reached_;
-    reached.setSize(phi0.size());
-    reached = false;
-    for (label f = 0; f < addr_.nInternal(); ++f)
-    {
-        if (aperture_[f] <= 0) continue;
-        const label P = addr_.own()[f], N = addr_.nei()[f];
-        if (phi0[N] > 0) reached[P] = true;
-        if (phi0[P] > 0) reached[N] = true;
-    }
-    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
-    {
-        const label b = cf - addr_.nInternal();
-        if (aperture_[cf] > 0 && addr_.coupledFace()[b] && phi0Nbr[b] > 0)
-        {
-            reached[addr_.own()[cf]] = true;
-        }
-    }
+    // gas is next to it. Only the opening cells' faces are looked at
     scalarField& phi1Ref = phi1Field.primitiveFieldRef();
     bool closed = false;
     forAll(phi1Ref, i)
     {
-        if (phi0[i] <= 0 && phi1Ref[i] > 0 && !reached[i])
+        if (phi0[i] <= 0 && phi1Ref[i] > 0 && !reachedByGas(i, phi0))
         {
             phi1Ref[i] = 0;
             closed = true;
@@ -138,51 +164,18 @@ void Foam::cutCellGeometry::set
     if (returnReduce(closed, orOp<bool>()))
     {
         phi1Field.correctBoundaryConditions();
-        addr_.coupledNeighbourValues(phi1Field, phi1Nbr);
-        for (label f = 0; f < addr_.nInternal(); ++f)
-        {
-            const label P = addr_.own()[f], N = addr_.nei()[f];
-            if
-            (
-                (phi0[P] <= 0 && phi1[P] <= 0)
-             || (phi0[N] <= 0 && phi1[N] <= 0)
-            )
-            {
-                aperture_[f] = 0;
-            }
-        }
-        for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
-        {
-            const label P = addr_.own()[cf], b = cf - addr_.nInternal();
-            if
-            (
-                (phi0[P] <= 0 && phi1[P] <= 0)
-             || (addr_.coupledFace()[b] && phi0Nbr[b] <= 0 && phi1Nbr[b] <= 0)
-            )
-            {
-                aperture_[cf] = 0;
-            }
-        }
+        addr_.coupledNeighbourValues(phi1Field, phi1Nbr_);
+        closeShutFaces(phi0, phi1);
     }
 
-    // Closure: the wall of a cell closes its open faces
-    wallVector_ = Zero;
-    for (label f = 0; f < addr_.nInternal(); ++f)
-    {
-        wallVector_[addr_.own()[f]] -= aperture_[f]*addr_.Sf()[f];
-        wallVector_[addr_.nei()[f]] += aperture_[f]*addr_.Sf()[f];
-    }
-    for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
-    {
-        wallVector_[addr_.own()[cf]] -= aperture_[cf]*addr_.Sf()[cf];
-    }
     const scalarField& V = mesh_.V();
+    const bool twoD = mesh_.nSolutionD() == 2;
     newCell_.setSize(V.size());
     forAll(V, i)
     {
         newCell_[i] = phi0[i] <= 0 && phi1[i] > 0;
         // The front and back planes of a 2D mesh close each other
-        if (mesh_.nSolutionD() == 2) wallVector_[i].z() = 0;
+        if (twoD) wallVector_[i].z() = 0;
         sweptVolume_[i] = (phi1[i] - phi0[i])*V[i];
         if (phi0[i] <= 0 && phi1[i] <= 0) wallVector_[i] = Zero;
     }
