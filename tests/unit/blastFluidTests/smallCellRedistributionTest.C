@@ -1,4 +1,5 @@
-// The cut cells' small-cell treatment (smallCellRedistribution, weighted
+// The cut cells' geometry of a step (cutCellGeometry, last test) and
+// small-cell treatment (smallCellRedistribution, weighted
 // state redistribution) on its own, on a blockMesh mesh with random fluid
 // fractions, apertures and contents: every component conserved to
 // round-off, a uniform state kept to round-off, positive density and
@@ -14,6 +15,7 @@
 #include "OFstream.H"
 #include "Random.H"
 #include "smallCellRedistribution.H"
+#include "cutCellGeometry.H"
 #include <cstdlib>
 #include <unistd.h>
 #include <sstream>
@@ -457,4 +459,107 @@ TEST(SmallCellRedistribution, OrphansGoToNearestGasOrAreCounted)
                   << "), mass and energy kept to " << sci(max(mErr, eErr))
                   << std::endl;
     }
+}
+
+
+// The step's geometry (cutCellGeometry) on random fluid fractions at both
+// ends and random apertures: the faces of cells without gas at both ends
+// are closed; every cell's wall vector closes its open faces (W_i + sum_f
+// a_f S_f = 0, outward face vectors); the swept volume is (phi1 - phi0) V;
+// a cell that opens with no open face to gas stays closed, one next to gas
+// opens (and is a new cell)
+TEST(CutCellGeometry, ClosesFacesAndWallsAndKeepsUnreachedCellsClosed)
+{
+    scalar worstClosure = 0;
+    label nKept = 0, nOpened = 0;
+    for (const label n : {9, 24})
+    {
+        srdCase s(n, 5);
+        volScalarField& phi0 = s.phi;
+        volScalarField phi1("phi1", phi0);
+        Random rnd(31*n);
+        scalarField& p0 = phi0.primitiveFieldRef();
+        scalarField& p1 = phi1.primitiveFieldRef();
+        forAll(p0, i)
+        {
+            const scalar r0 = rnd.sample01<scalar>();
+            const scalar r1 = rnd.sample01<scalar>();
+            p0[i] = r0 < 0.3 ? 0 : r0;
+            p1[i] = r1 < 0.3 ? 0 : r1;
+        }
+        phi0.correctBoundaryConditions();
+        phi1.correctBoundaryConditions();
+        const scalarField p1Given(p1);
+        surfaceScalarField ap
+        (
+            IOobject("aperture", s.runTime.timeName(), s.mesh),
+            s.mesh,
+            dimensionedScalar("one", dimless, 1.0)
+        );
+        forAll(ap, f) ap[f] = rnd.sample01<scalar>() < 0.2 ? 0 : 1;
+        cutCellGeometry g(s.mesh, s.addr);
+        g.set(phi0, phi1, ap);
+
+        const blastFaceAddressing& a = s.addr;
+        const scalarField& A = g.aperture();
+        vectorField sumOpen(s.mesh.nCells(), Zero);
+        scalar scale = 0;
+        for (label f = 0; f < a.nFaces(); ++f)
+        {
+            const label P = a.own()[f];
+            sumOpen[P] += A[f]*a.Sf()[f];
+            scale = max(scale, mag(a.Sf()[f]));
+            const bool shutP = p0[P] <= 0 && p1[P] <= 0;
+            bool shutN = false;
+            if (f < a.nInternal())
+            {
+                const label N = a.nei()[f];
+                sumOpen[N] -= A[f]*a.Sf()[f];
+                shutN = p0[N] <= 0 && p1[N] <= 0;
+            }
+            if (shutP || shutN)
+            {
+                EXPECT_EQ(A[f], 0) << "face " << f;
+            }
+        }
+        const scalarField& V = s.mesh.V();
+        forAll(V, i)
+        {
+            vector c = g.wallVector()[i] + sumOpen[i];
+            c.z() = 0;
+            worstClosure = max(worstClosure, mag(c)/scale);
+            EXPECT_EQ(g.sweptVolume()[i], (p1[i] - p0[i])*V[i]);
+            if (p0[i] <= 0 && p1Given[i] > 0)
+            {
+                // Opening: kept closed unless an open face leads to gas
+                bool gasNext = false;
+                for (const label f : s.mesh.cells()[i])
+                {
+                    if (f >= a.nInternal()) continue;
+                    const label o = a.own()[f] == i ? a.nei()[f] : a.own()[f];
+                    gasNext = gasNext || (ap[f] > 0 && p0[o] > 0);
+                }
+                if (gasNext)
+                {
+                    ++nOpened;
+                    EXPECT_EQ(p1[i], p1Given[i]);
+                    EXPECT_TRUE(g.newCell()[i]);
+                }
+                else
+                {
+                    ++nKept;
+                    EXPECT_EQ(p1[i], 0);
+                    EXPECT_FALSE(g.newCell()[i]);
+                }
+            }
+        }
+    }
+    EXPECT_LT(worstClosure, 1e-14);
+    EXPECT_GT(nKept, 0);
+    EXPECT_GT(nOpened, 0);
+    RecordProperty("wall closure: max |W + sum a S| / |S|", sci(worstClosure));
+    std::cout << "    wall vectors close the open faces to " << sci(worstClosure)
+              << " of a face area (tolerance 1e-14); opening cells: "
+              << nOpened << " next to gas opened, " << nKept
+              << " out of reach kept closed" << std::endl;
 }
