@@ -849,31 +849,27 @@ void Foam::blastFluidSolver::faceThermo()
 {
     const blastReconstruction::phaseFaceDensities& ph =
         reconstruction_->phaseDensities();
-    const scalarField& rho1L = ph.rho1L;
-    const scalarField& rho1R = ph.rho1R;
-    const scalarField& rho2L = ph.rho2L;
-    const scalarField& rho2R = ph.rho2R;
     blastFaceStates& s = faces_;
     const label n = addr_.nFaces();
 
     if (threePhase_)
     {
-        faceThermo3();
+        faceThermo3(ph);
     }
     else if (multiPhase_)
     {
         for (label f = 0; f < n; ++f)
         {
             const scalar aL = s.alphaL[f], aR = s.alphaR[f];
-            const scalar m1L = aL*rho1L[f], m1R = aR*rho1R[f];
-            s.rhoL[f] = m1L + (1 - aL)*rho2L[f];
-            s.rhoR[f] = m1R + (1 - aR)*rho2R[f];
+            const scalar m1L = aL*ph.rho1L[f], m1R = aR*ph.rho1R[f];
+            s.rhoL[f] = m1L + (1 - aL)*ph.rho2L[f];
+            s.rhoR[f] = m1R + (1 - aR)*ph.rho2R[f];
             s.Y1L[f] = m1L/s.rhoL[f];
             s.Y1R[f] = m1R/s.rhoR[f];
         }
         mixture_.rhoeC2
         (
-            n, s.alphaL, rho1L, rho2L, s.rhoL, s.pL, workE_, workC2_,
+            n, s.alphaL, ph.rho1L, ph.rho2L, s.rhoL, s.pL, workE_, workC2_,
             burn_.valid() ? &burnL_ : nullptr
         );
         for (label f = 0; f < n; ++f)
@@ -883,7 +879,7 @@ void Foam::blastFluidSolver::faceThermo()
         }
         mixture_.rhoeC2
         (
-            n, s.alphaR, rho1R, rho2R, s.rhoR, s.pR, workE_, workC2_,
+            n, s.alphaR, ph.rho1R, ph.rho2R, s.rhoR, s.pR, workE_, workC2_,
             burn_.valid() ? &burnR_ : nullptr
         );
         for (label f = 0; f < n; ++f)
@@ -1327,16 +1323,11 @@ void Foam::blastFluidSolver::conservativeFromPrimitive3()
 }
 
 
-void Foam::blastFluidSolver::faceThermo3()
+void Foam::blastFluidSolver::faceThermo3
+(
+    const blastReconstruction::phaseFaceDensities& ph
+)
 {
-    const blastReconstruction::phaseFaceDensities& ph =
-        reconstruction_->phaseDensities();
-    const scalarField& rho1L = ph.rho1L;
-    const scalarField& rho1R = ph.rho1R;
-    const scalarField& rho2L = ph.rho2L;
-    const scalarField& rho2R = ph.rho2R;
-    const scalarField& rho3L = ph.rho3L;
-    const scalarField& rho3R = ph.rho3R;
     blastFaceStates& s = faces_;
     const label n = addr_.nFaces();
     // The limiter bounds alpha1 and alpha2 on a face each by its
@@ -1363,10 +1354,10 @@ void Foam::blastFluidSolver::faceThermo3()
     {
         const scalar aL = s.alphaL[f], aR = s.alphaR[f];
         const scalar bL = s.alpha2L[f], bR = s.alpha2R[f];
-        const scalar m1L = aL*rho1L[f], m1R = aR*rho1R[f];
-        const scalar m2L = bL*rho2L[f], m2R = bR*rho2R[f];
-        s.rhoL[f] = m1L + m2L + (1 - aL - bL)*rho3L[f];
-        s.rhoR[f] = m1R + m2R + (1 - aR - bR)*rho3R[f];
+        const scalar m1L = aL*ph.rho1L[f], m1R = aR*ph.rho1R[f];
+        const scalar m2L = bL*ph.rho2L[f], m2R = bR*ph.rho2R[f];
+        s.rhoL[f] = m1L + m2L + (1 - aL - bL)*ph.rho3L[f];
+        s.rhoR[f] = m1R + m2R + (1 - aR - bR)*ph.rho3R[f];
         s.Y1L[f] = m1L/s.rhoL[f];
         s.Y1R[f] = m1R/s.rhoR[f];
         s.Y2L[f] = m2L/s.rhoL[f];
@@ -1374,7 +1365,7 @@ void Foam::blastFluidSolver::faceThermo3()
     }
     mixture_.rhoeC2
     (
-        n, s.alphaL, s.alpha2L, rho1L, rho2L, rho3L, s.rhoL, s.pL,
+        n, s.alphaL, s.alpha2L, ph.rho1L, ph.rho2L, ph.rho3L, s.rhoL, s.pL,
         workE_, workC2_, burn_.valid() ? &burnL_ : nullptr
     );
     for (label f = 0; f < n; ++f)
@@ -1384,7 +1375,7 @@ void Foam::blastFluidSolver::faceThermo3()
     }
     mixture_.rhoeC2
     (
-        n, s.alphaR, s.alpha2R, rho1R, rho2R, rho3R, s.rhoR, s.pR,
+        n, s.alphaR, s.alpha2R, ph.rho1R, ph.rho2R, ph.rho3R, s.rhoR, s.pR,
         workE_, workC2_, burn_.valid() ? &burnR_ : nullptr
     );
     for (label f = 0; f < n; ++f)
