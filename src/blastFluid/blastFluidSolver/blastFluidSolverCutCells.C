@@ -54,7 +54,7 @@ void Foam::blastFluidSolver::scaleFluxes(const scalarField& phif)
         F_.rhoU[f] *= phif[f];
         F_.rhoE[f] *= phif[f];
     }
-    if (multiPhase_)
+    if (state_.multiPhase())
     {
         for (label f = 0; f < addr_.nFaces(); ++f)
         {
@@ -63,7 +63,7 @@ void Foam::blastFluidSolver::scaleFluxes(const scalarField& phif)
             F_.uS[f] *= phif[f];
         }
     }
-    if (threePhase_)
+    if (state_.threePhase())
     {
         for (label f = 0; f < addr_.nFaces(); ++f)
         {
@@ -135,33 +135,33 @@ void Foam::blastFluidSolver::contentFromState
     cRho.setSize(n);
     cRhoU.setSize(n);
     cRhoE.setSize(n);
-    const scalarField& rho = rho_.primitiveField();
-    const vectorField& rhoU = rhoU_.primitiveField();
-    const scalarField& rhoE = rhoE_.primitiveField();
+    const scalarField& rho = state_.rho().primitiveField();
+    const vectorField& rhoU = state_.rhoU().primitiveField();
+    const scalarField& rhoE = state_.rhoE().primitiveField();
     for (label i = 0; i < n; ++i)
     {
         cRho[i] = rho[i]*phi[i];
         cRhoU[i] = rhoU[i]*phi[i];
         cRhoE[i] = rhoE[i]*phi[i];
     }
-    if (multiPhase_)
+    if (state_.multiPhase())
     {
         cAlpha.setSize(n);
         cAlphaRho1.setSize(n);
-        const scalarField& alpha = alpha1Ptr_->primitiveField();
-        const scalarField& ar1 = alphaRho1Ptr_->primitiveField();
+        const scalarField& alpha = state_.alpha1Ptr()->primitiveField();
+        const scalarField& ar1 = state_.alphaRho1Ptr()->primitiveField();
         for (label i = 0; i < n; ++i)
         {
             cAlpha[i] = alpha[i]*phi[i];
             cAlphaRho1[i] = ar1[i]*phi[i];
         }
     }
-    if (threePhase_)
+    if (state_.threePhase())
     {
         c.alpha2.setSize(n);
         c.alphaRho2.setSize(n);
-        const scalarField& alpha2 = alpha2Ptr_->primitiveField();
-        const scalarField& ar2 = alphaRho2Ptr_->primitiveField();
+        const scalarField& alpha2 = state_.alpha2Ptr()->primitiveField();
+        const scalarField& ar2 = state_.alphaRho2Ptr()->primitiveField();
         for (label i = 0; i < n; ++i)
         {
             c.alpha2[i] = alpha2[i]*phi[i];
@@ -183,17 +183,18 @@ void Foam::blastFluidSolver::stateFromContent
     const scalarField& cRhoE = c.rhoE;
     const scalarField& cAlpha = c.alpha;
     const scalarField& cAlphaRho1 = c.alphaRho1;
+    blastFluidState& st = state_;
     scalarField* alpha2 =
-        threePhase_ ? &alpha2Ptr_->primitiveFieldRef() : nullptr;
+        st.threePhase() ? &st.alpha2Ptr()->primitiveFieldRef() : nullptr;
     scalarField* ar2 =
-        threePhase_ ? &alphaRho2Ptr_->primitiveFieldRef() : nullptr;
-    scalarField& rho = rho_.primitiveFieldRef();
-    vectorField& rhoU = rhoU_.primitiveFieldRef();
-    scalarField& rhoE = rhoE_.primitiveFieldRef();
+        st.threePhase() ? &st.alphaRho2Ptr()->primitiveFieldRef() : nullptr;
+    scalarField& rho = st.rho().primitiveFieldRef();
+    vectorField& rhoU = st.rhoU().primitiveFieldRef();
+    scalarField& rhoE = st.rhoE().primitiveFieldRef();
     scalarField* alpha =
-        multiPhase_ ? &alpha1Ptr_->primitiveFieldRef() : nullptr;
+        st.multiPhase() ? &st.alpha1Ptr()->primitiveFieldRef() : nullptr;
     scalarField* ar1 =
-        multiPhase_ ? &alphaRho1Ptr_->primitiveFieldRef() : nullptr;
+        st.multiPhase() ? &st.alphaRho1Ptr()->primitiveFieldRef() : nullptr;
     if (changed) changed->clear();
     forAll(phi, i)
     {
@@ -228,7 +229,7 @@ void Foam::blastFluidSolver::stateFromContent
         // (a NaN differs from itself: it is listed, and stops the run)
         if (changed && differs) changed->append(i);
     }
-    primitivesCurrent_ = false;
+    state_.invalidate();
 }
 
 
@@ -240,7 +241,8 @@ Foam::smallCellRedistribution& Foam::blastFluidSolver::srd()
         (
             new smallCellRedistribution
             (
-                mesh_, addr_, threePhase_ ? 9 : multiPhase_ ? 7 : 5
+                mesh_, addr_,
+                state_.threePhase() ? 9 : state_.multiPhase() ? 7 : 5
             )
         );
     }
@@ -252,22 +254,22 @@ void Foam::blastFluidSolver::fillEmptyCells()
 {
     const scalarField& aperture = geometry_->aperture();
     const scalarField& phi = fluidFractionPtr_->primitiveField();
-    rho_.correctBoundaryConditions();
-    rhoU_.correctBoundaryConditions();
-    rhoE_.correctBoundaryConditions();
+    state_.rho().correctBoundaryConditions();
+    state_.rhoU().correctBoundaryConditions();
+    state_.rhoE().correctBoundaryConditions();
     fluidFractionPtr_->correctBoundaryConditions();
     scalarField rhoB, rhoEB, phiB, alphaB, ar1B;
     vectorField rhoUB;
-    addr_.coupledNeighbourValues(rho_, rhoB);
-    addr_.coupledNeighbourValues(rhoU_, rhoUB);
-    addr_.coupledNeighbourValues(rhoE_, rhoEB);
+    addr_.coupledNeighbourValues(state_.rho(), rhoB);
+    addr_.coupledNeighbourValues(state_.rhoU(), rhoUB);
+    addr_.coupledNeighbourValues(state_.rhoE(), rhoEB);
     addr_.coupledNeighbourValues(fluidFractionPtr_(), phiB);
-    if (multiPhase_)
+    if (state_.multiPhase())
     {
-        alpha1Ptr_->correctBoundaryConditions();
-        alphaRho1Ptr_->correctBoundaryConditions();
-        addr_.coupledNeighbourValues(alpha1Ptr_(), alphaB);
-        addr_.coupledNeighbourValues(alphaRho1Ptr_(), ar1B);
+        state_.alpha1Ptr()->correctBoundaryConditions();
+        state_.alphaRho1Ptr()->correctBoundaryConditions();
+        addr_.coupledNeighbourValues(state_.alpha1Ptr()(), alphaB);
+        addr_.coupledNeighbourValues(state_.alphaRho1Ptr()(), ar1B);
     }
 
     // Mean of the open neighbours with gas, weighted by their fluid
@@ -283,21 +285,25 @@ void Foam::blastFluidSolver::fillEmptyCells()
         w[i] += wt; r[i] += wt*rr; m[i] += wt*mm; e[i] += wt*ee;
         a[i] += wt*aa; ar[i] += wt*arr;
     };
+    const bool mp = state_.multiPhase();
+    const scalarField& rho = state_.rho().primitiveField();
+    const vectorField& rhoU = state_.rhoU().primitiveField();
+    const scalarField& rhoE = state_.rhoE().primitiveField();
     const scalarField& alpha =
-        multiPhase_ ? alpha1Ptr_->primitiveField() : rho_.primitiveField();
+        mp ? state_.alpha1Ptr()->primitiveField() : rho;
     const scalarField& ar1 =
-        multiPhase_ ? alphaRho1Ptr_->primitiveField() : rho_.primitiveField();
+        mp ? state_.alphaRho1Ptr()->primitiveField() : rho;
     for (label f = 0; f < addr_.nInternal(); ++f)
     {
         if (aperture[f] <= 0) continue;
         const label P = addr_.own()[f], N = addr_.nei()[f];
         if (phi[P] <= 0 && phi[N] > 0)
         {
-            add(P, phi[N], rho_[N], rhoU_[N], rhoE_[N], alpha[N], ar1[N]);
+            add(P, phi[N], rho[N], rhoU[N], rhoE[N], alpha[N], ar1[N]);
         }
         if (phi[N] <= 0 && phi[P] > 0)
         {
-            add(N, phi[P], rho_[P], rhoU_[P], rhoE_[P], alpha[P], ar1[P]);
+            add(N, phi[P], rho[P], rhoU[P], rhoE[P], alpha[P], ar1[P]);
         }
     }
     for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
@@ -308,33 +314,33 @@ void Foam::blastFluidSolver::fillEmptyCells()
             add
             (
                 P, phiB[b], rhoB[b], rhoUB[b], rhoEB[b],
-                multiPhase_ ? alphaB[b] : 0, multiPhase_ ? ar1B[b] : 0
+                mp ? alphaB[b] : 0, mp ? ar1B[b] : 0
             );
         }
     }
     scalarField& alphaRef =
-        multiPhase_ ? alpha1Ptr_->primitiveFieldRef() : w;
+        state_.multiPhase() ? state_.alpha1Ptr()->primitiveFieldRef() : w;
     scalarField& ar1Ref =
-        multiPhase_ ? alphaRho1Ptr_->primitiveFieldRef() : w;
+        state_.multiPhase() ? state_.alphaRho1Ptr()->primitiveFieldRef() : w;
     for (label i = 0; i < nCells; ++i)
     {
         if (phi[i] > 0 || w[i] <= 0) continue;
         const scalar s = 1/w[i];
-        rho_[i] = s*r[i];
-        rhoU_[i] = s*m[i];
-        rhoE_[i] = s*e[i];
-        if (multiPhase_)
+        state_.rho()[i] = s*r[i];
+        state_.rhoU()[i] = s*m[i];
+        state_.rhoE()[i] = s*e[i];
+        if (state_.multiPhase())
         {
             alphaRef[i] = s*a[i];
             ar1Ref[i] = s*ar[i];
         }
     }
-    if (threePhase_)
+    if (state_.threePhase())
     {
-        fillEmptyCellsField(alpha2Ptr_());
-        fillEmptyCellsField(alphaRho2Ptr_());
+        fillEmptyCellsField(state_.alpha2Ptr()());
+        fillEmptyCellsField(state_.alphaRho2Ptr()());
     }
-    primitivesCurrent_ = false;
+    state_.invalidate();
 }
 
 
@@ -396,7 +402,7 @@ void Foam::blastFluidSolver::addWallTerms(const label s, const scalar dt)
     // cell at least half of the internal energy it would have without the
     // wall (theta p, theta in [0, 1]); the impulse and the work the wall
     // receives are theta times as large, so the reaction stays exact
-    const scalarField& p = p_.primitiveField();
+    const scalarField& p = state_.p().primitiveField();
     const scalarField& V = mesh_.V();
     const vectorField& wallVector = geometry_->wallVector();
     const scalarField& sweptVolume = geometry_->sweptVolume();
@@ -430,17 +436,17 @@ void Foam::blastFluidSolver::addWallTerms(const label s, const scalar dt)
         wallWork_[i] += b*theta*work;
         wallPressureImpulse_[i] += b*dt*pw;
     }
-    if (multiPhase_)
+    if (state_.multiPhase())
     {
-        const scalarField& alpha = alpha1Ptr_->primitiveField();
+        const scalarField& alpha = state_.alpha1Ptr()->primitiveField();
         forAll(V, i)
         {
             residual_.alpha[i] += alpha[i]*sweptVolume[i]/(dt*V[i]);
         }
     }
-    if (threePhase_)
+    if (state_.threePhase())
     {
-        const scalarField& alpha2 = alpha2Ptr_->primitiveField();
+        const scalarField& alpha2 = state_.alpha2Ptr()->primitiveField();
         forAll(V, i)
         {
             residual_.alpha2[i] += alpha2[i]*sweptVolume[i]/(dt*V[i]);
@@ -512,12 +518,12 @@ bool Foam::blastFluidSolver::cutCellStage
     rk.combine(s, dt, cutStart_.rho, cRho, residual_.rho);
     rk.combine(s, dt, cutStart_.rhoU, cRhoU, residual_.rhoU);
     rk.combine(s, dt, cutStart_.rhoE, cRhoE, residual_.rhoE);
-    if (multiPhase_)
+    if (state_.multiPhase())
     {
         rk.combine(s, dt, cutStart_.alpha, cAlpha, residual_.alpha);
         rk.combine(s, dt, cutStart_.alphaRho1, cAlphaRho1, residual_.alphaRho1);
     }
-    if (threePhase_)
+    if (state_.threePhase())
     {
         rk.combine(s, dt, cutStart_.alpha2, cut_.alpha2, residual_.alpha2);
         rk.combine
@@ -536,25 +542,13 @@ bool Foam::blastFluidSolver::cutCellStage
 void Foam::blastFluidSolver::advanceCutCells(const scalar dt)
 {
     fillEmptyCells();
-    if (!primitivesCurrent_)
+    if (!state_.current())
     {
         primitivesFromConservative(true);
     }
     const scalarField& phi0 = fluidFractionPtr_->primitiveField();
     contentFromState(phi0, cutStart_);
-    start_.rho = rho_.primitiveField();
-    start_.rhoU = rhoU_.primitiveField();
-    start_.rhoE = rhoE_.primitiveField();
-    if (multiPhase_)
-    {
-        start_.alpha = alpha1Ptr_->primitiveField();
-        start_.alphaRho1 = alphaRho1Ptr_->primitiveField();
-    }
-    if (threePhase_)
-    {
-        start_.alpha2 = alpha2Ptr_->primitiveField();
-        start_.alphaRho2 = alphaRho2Ptr_->primitiveField();
-    }
+    state_.saveConservative(start_);
     const scalar lostMass0 = lostMass(), lostEnergy0 = lostEnergy();
 
     lowOrder_.primitiveFieldRef() = 0;
@@ -627,7 +621,7 @@ void Foam::blastFluidSolver::enableCutCells(const scalarField& phi)
     wallPressureImpulse_.setSize(mesh_.nCells(), 0);
     wallImpulse_.setSize(mesh_.nCells(), Zero);
     if (srd_.valid()) srd_->setLost(0, 0);
-    primitivesCurrent_ = false;
+    state_.invalidate();
 }
 
 
@@ -763,11 +757,11 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
     // changed need new primitives (the cut cells and their
     // neighbourhoods; a round-off share of the spread changes few others)
     // when the others' are current, as the step leaves them
-    const bool current = primitivesCurrent_;
-    stateFromContent(phi, cut_, &gathered_.cells);
+    const bool current = state_.current();
+    stateFromContent(phi, cut_, &changedCells_);
     if (current)
     {
-        primitivesOfCells(gathered_.cells);
+        state_.primitivesOfCells(changedCells_, burnCells());
     }
     else
     {
@@ -790,13 +784,13 @@ void Foam::blastFluidSolver::addContent
     // content does: a crack's gas handed over by the point rule to a
     // sliver (benchBlast: 3.6e-6 kg of 400 kg/m3 gas into 2.7e-9 m3 of a
     // cell 1 % open) was compressed to 1360 kg/m3 and 13 GPa alone
-    if (threePhase_)
+    if (state_.threePhase())
     {
         // The exchange carries material 1 and the rest (the crack gas of
         // two materials; jwlIbFoam refuses crackGas with three)
         FatalErrorInFunction
             << "addContent takes two materials, the case has three "
-            << mixture_.materials() << exit(FatalError);
+            << state_.mixture().materials() << exit(FatalError);
     }
     if (!fluidFractionPtr_.valid())
     {
@@ -814,14 +808,14 @@ void Foam::blastFluidSolver::addContent
     {
         const label c = cells[k];
         checkHoldsGas(c, phi[c]*V[c]);
-        if (multiPhase_)
+        if (state_.multiPhase())
         {
             // The added masses at the cell's phase densities, the cell's
             // gas volume kept: alpha = (alpha Vg + dm1/rho1)/(Vg + dm1/rho1
             // + dm2/rho2)
             const scalar Vg = phi[c]*V[c];
-            const scalar r1 = rho1Ptr_->primitiveField()[c];
-            const scalar r2 = rho2Ptr_->primitiveField()[c];
+            const scalar r1 = state_.rho1Ptr()->primitiveField()[c];
+            const scalar r2 = state_.rho2Ptr()->primitiveField()[c];
             const scalar v1 = dm1[k]/r1, v2 = (dm[k] - dm1[k])/r2;
             const scalar vol = q.alpha[c]*V[c] + v1;
             const scalar alpha = min
@@ -860,32 +854,32 @@ void Foam::blastFluidSolver::addContentFull
 {
     // No solid on the mesh: every cell is whole
     const scalarField& V = mesh_.V();
-    scalarField& rho = rho_.primitiveFieldRef();
-    vectorField& rhoU = rhoU_.primitiveFieldRef();
-    scalarField& rhoE = rhoE_.primitiveFieldRef();
+    scalarField& rho = state_.rho().primitiveFieldRef();
+    vectorField& rhoU = state_.rhoU().primitiveFieldRef();
+    scalarField& rhoE = state_.rhoE().primitiveFieldRef();
     forAll(cells, k)
     {
         const label c = cells[k];
         const scalar Vg = V[c];
-        if (multiPhase_)
+        if (state_.multiPhase())
         {
-            scalar& alpha = alpha1Ptr_->primitiveFieldRef()[c];
-            const scalar r1 = rho1Ptr_->primitiveField()[c];
-            const scalar r2 = rho2Ptr_->primitiveField()[c];
+            scalar& alpha = state_.alpha1Ptr()->primitiveFieldRef()[c];
+            const scalar r1 = state_.rho1Ptr()->primitiveField()[c];
+            const scalar r2 = state_.rho2Ptr()->primitiveField()[c];
             const scalar v1 = dm1[k]/r1, v2 = (dm[k] - dm1[k])/r2;
             alpha = min
             (
                 max((alpha*Vg + v1)/max(Vg + v1 + v2, VSMALL), scalar(0)),
                 scalar(1)
             );
-            alphaRho1Ptr_->primitiveFieldRef()[c] += dm1[k]/Vg;
+            state_.alphaRho1Ptr()->primitiveFieldRef()[c] += dm1[k]/Vg;
         }
         rho[c] += dm[k]/Vg;
         rhoU[c] += dmU[k]/Vg;
         rhoE[c] += dE[k]/Vg;
         checkGasLeft(c, rho[c], rhoU[c], rhoE[c], dm[k], dE[k]);
     }
-    primitivesCurrent_ = false;
+    state_.invalidate();
     primitivesFromConservative(true);
 }
 

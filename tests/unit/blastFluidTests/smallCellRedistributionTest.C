@@ -12,12 +12,10 @@
 #include "Time.H"
 #include "volFields.H"
 #include "surfaceFields.H"
-#include "OFstream.H"
 #include "Random.H"
 #include "smallCellRedistribution.H"
 #include "cutCellGeometry.H"
-#include <cstdlib>
-#include <unistd.h>
+#include "blockMeshCase.H"
 #include <sstream>
 #include <iomanip>
 
@@ -32,86 +30,12 @@ namespace
         return os.str();
     }
 
-    // The case directories made, removed when the tests end
-    struct scratchDirs
-    {
-        DynamicList<fileName> dirs;
-        ~scratchDirs()
-        {
-            // (not Foam::rmDir: OpenFOAM's file handler may be gone by
-            // the time static objects are destroyed)
-            for (const fileName& d : dirs)
-            {
-                const std::string cmd = "rm -rf '" + std::string(d) + "'";
-                if (std::system(cmd.c_str()) != 0) {}
-            }
-        }
-    };
-    scratchDirs scratch;
-
-    // A case directory with an n x n x 1 blockMesh mesh of the unit square
-    // (walls around, empty front and back), meshed once per n
-    fileName meshedCase(const label n)
-    {
-        const char* tmp = std::getenv("TMPDIR");
-        const fileName root(tmp ? tmp : "/tmp");
-        const fileName dir =
-            root
-           /("srdTest" + Foam::name(label(::getpid())) + "_" + Foam::name(n));
-        if (isDir(dir/"constant"/"polyMesh")) return dir;
-        mkDir(dir/"system");
-        scratch.dirs.append(dir);
-        {
-            OFstream os(dir/"system"/"controlDict");
-            os  << "FoamFile { version 2.0; format ascii; class dictionary;"
-                << " object controlDict; }\n"
-                << "application none; startFrom startTime; startTime 0;"
-                << " stopAt endTime; endTime 1; deltaT 1;"
-                << " writeControl timeStep; writeInterval 1;\n";
-        }
-        // (fvMesh reads them; the redistribution uses no scheme)
-        for (const word name : {"fvSchemes", "fvSolution"})
-        {
-            OFstream os(dir/"system"/name);
-            os  << "FoamFile { version 2.0; format ascii; class dictionary;"
-                << " object " << name << "; }\n";
-            if (name == "fvSchemes")
-            {
-                os  << "ddtSchemes {} gradSchemes {} divSchemes {}"
-                    << " laplacianSchemes {} interpolationSchemes {}"
-                    << " snGradSchemes {}\n";
-            }
-        }
-        {
-            OFstream os(dir/"system"/"blockMeshDict");
-            os  << "FoamFile { version 2.0; format ascii; class dictionary;"
-                << " object blockMeshDict; }\n"
-                << "vertices ((0 0 0) (1 0 0) (1 1 0) (0 1 0) (0 0 0.1)"
-                << " (1 0 0.1) (1 1 0.1) (0 1 0.1));\n"
-                << "blocks (hex (0 1 2 3 4 5 6 7) (" << n << ' ' << n
-                << " 1) simpleGrading (1 1 1));\n"
-                << "boundary ( walls { type wall; faces ((0 4 7 3)"
-                << " (1 2 6 5) (0 1 5 4) (3 7 6 2)); } frontAndBack"
-                << " { type empty; faces ((0 3 2 1) (4 5 6 7)); } );\n";
-        }
-        const std::string cmd =
-            "blockMesh -case '" + std::string(dir) + "' > '"
-          + std::string(dir) + "/log.blockMesh' 2>&1";
-        if (std::system(cmd.c_str()) != 0)
-        {
-            FatalErrorInFunction << "blockMesh failed in " << dir
-                << exit(FatalError);
-        }
-        return dir;
-    }
-
     // The mesh, the solver's face addressing and a redistribution of
     // nComp components, with random fluid fractions, apertures and content
     struct srdCase
+    :
+        public blockMeshCase::timeAndMesh
     {
-        fileName dir;
-        Time runTime;
-        fvMesh mesh;
         volVectorField U;
         blastFaceAddressing addr;
         smallCellRedistribution srd;
@@ -122,20 +46,7 @@ namespace
 
         srdCase(const label n, const label nComponents)
         :
-            dir(meshedCase(n)),
-            runTime
-            (
-                Time::controlDictName, dir.path(), fileName(dir.name()),
-                "system", "constant", false, false
-            ),
-            mesh
-            (
-                IOobject
-                (
-                    fvMesh::defaultRegion, runTime.timeName(), runTime,
-                    IOobject::MUST_READ
-                )
-            ),
+            timeAndMesh(blockMeshCase::unitSquare(n, "srdTest")),
             U
             (
                 IOobject("U", runTime.timeName(), mesh),

@@ -1,0 +1,405 @@
+// The gas state of the solver (blastFluidState) on its own, on blockMesh
+// meshes with random fields of two and three materials (stiffened-gas
+// water, ideal-gas air and helium): the conservative state from the
+// primitive fields and the primitives back from it reproduce p, U, the
+// volume fractions and the phase densities to round-off; a non-physical
+// cell is marked for a first-order retry (not fatal) or stops the run
+// naming the cell (fatal); the primitives of a list of cells are bitwise
+// those of the whole-mesh conversion; fields out of range stop with a
+// FatalIOError naming the field and the cell
+#include <gtest/gtest.h>
+#include "fvMesh.H"
+#include "Time.H"
+#include "volFields.H"
+#include "Random.H"
+#include "blastFluidState.H"
+#include "blockMeshCase.H"
+#include <sstream>
+#include <iomanip>
+
+using namespace Foam;
+
+namespace
+{
+    std::string sci(const scalar x)
+    {
+        std::ostringstream os;
+        os << std::scientific << std::setprecision(2) << x;
+        return os.str();
+    }
+
+    // The materials' dictionaries (water a stiffened gas, air and helium
+    // ideal gases)
+    const char* const materialDicts =
+        "water { equationOfState stiffenedGas; gamma 4.4; pInf 6e8; }\n"
+        "air { equationOfState idealGas; gamma 1.4; Cv 718; }\n"
+        "helium { equationOfState idealGas; gamma 1.667; Cv 3116; }\n";
+
+    // Write a field of the start time: cell values at 17 digits, zero
+    // gradient (slip for U) on the walls
+    template<class Type>
+    void writeField
+    (
+        const fileName& dir,
+        const word& name,
+        const word& cls,
+        const char* dims,
+        const UList<Type>& values
+    )
+    {
+        mkDir(dir/"0");
+        OFstream os(dir/"0"/name);
+        os.precision(17);
+        os  << "FoamFile { version 2.0; format ascii; class " << cls
+            << "; object " << name << "; }\n"
+            << "dimensions " << dims << ";\n"
+            << "internalField nonuniform List<"
+            << word(pTraits<Type>::typeName) << "> " << values.size()
+            << " (";
+        for (const Type& v : values) os << ' ' << v;
+        os  << ");\nboundaryField { walls { type "
+            << (cls == "volVectorField" ? "slip" : "zeroGradient")
+            << "; } frontAndBack { type empty; } }\n";
+    }
+
+    // A case of nCells cells with random primitive fields of nMat
+    // materials (water first); pBad, alphaBad: a value out of range in
+    // cell 5 of p or of the first volume fraction
+    struct stateCase
+    {
+        fileName dir;
+        label nMat;
+        scalarField p, alpha1, alpha2, r1, r2, r3;
+        vectorField U;
+
+        stateCase
+        (
+            const label n,
+            const label nMaterials,
+            const label seed,
+            const std::string& prefix,
+            const bool pBad = false,
+            const bool alphaBad = false
+        )
+        :
+            dir(blockMeshCase::unitSquare(n, prefix)),
+            nMat(nMaterials)
+        {
+            if (isDir(dir/"0")) rmDir(dir/"0");
+            const label nc = n*n;
+            Random rnd(seed);
+            p.setSize(nc); U.setSize(nc);
+            alpha1.setSize(nc); alpha2.setSize(nc);
+            r1.setSize(nc); r2.setSize(nc); r3.setSize(nc);
+            for (label i = 0; i < nc; ++i)
+            {
+                // 1 MPa to 1 GPa
+                p[i] = Foam::pow(10.0, 6 + 3*rnd.sample01<scalar>());
+                U[i] = vector
+                (
+                    1000*(rnd.sample01<scalar>() - 0.5),
+                    1000*(rnd.sample01<scalar>() - 0.5),
+                    0
+                );
+                // pure cells of each material and mixed ones
+                const scalar a = rnd.sample01<scalar>();
+                const scalar b = rnd.sample01<scalar>();
+                alpha1[i] = i % 4 == 0 ? 0 : i % 4 == 1 ? 1 : a;
+                alpha2[i] = nMat == 3 ? (1 - alpha1[i])*b : 0;
+                r1[i] = 900 + 200*rnd.sample01<scalar>();
+                r2[i] = 1 + 50*rnd.sample01<scalar>();
+                r3[i] = 0.2 + 5*rnd.sample01<scalar>();
+            }
+            if (pBad) p[5] = -1;
+            if (alphaBad) alpha1[5] = 1.5;
+
+            blockMeshCase::writeDict
+            (
+                dir/"constant"/"thermophysicalProperties",
+                "thermophysicalProperties",
+                std::string
+                (
+                    nMat == 1 ? "materials (air);\n"
+                  : nMat == 2 ? "materials (water air);\n"
+                  : "materials (water air helium);\n"
+                )
+              + materialDicts
+            );
+            const char* dP = "[1 -1 -2 0 0 0 0]";
+            const char* dR = "[1 -3 0 0 0 0 0]";
+            writeField(dir, "p", "volScalarField", dP, p);
+            writeField(dir, "U", "volVectorField", "[0 1 -1 0 0 0 0]", U);
+            if (nMat == 1)
+            {
+                writeField(dir, "rho", "volScalarField", dR, r2);
+                return;
+            }
+            writeField
+            (
+                dir, "alpha.water", "volScalarField", "[0 0 0 0 0 0 0]",
+                alpha1
+            );
+            writeField(dir, "rho.water", "volScalarField", dR, r1);
+            writeField(dir, "rho.air", "volScalarField", dR, r2);
+            if (nMat == 3)
+            {
+                writeField
+                (
+                    dir, "alpha.air", "volScalarField", "[0 0 0 0 0 0 0]",
+                    alpha2
+                );
+                writeField(dir, "rho.helium", "volScalarField", dR, r3);
+            }
+        }
+    };
+
+    // The time, mesh and state of a case
+    struct stateRun
+    :
+        public blockMeshCase::timeAndMesh
+    {
+        blastFluidState state;
+        scalarField lowOrder;
+
+        explicit stateRun(const fileName& dir)
+        :
+            timeAndMesh(dir),
+            state(mesh),
+            lowOrder(mesh.nCells(), 0)
+        {}
+    };
+
+    scalar maxRelDiff(const scalarField& a, const scalarField& b)
+    {
+        scalar d = 0;
+        forAll(a, i)
+        {
+            d = max(d, mag(a[i] - b[i])/max(mag(b[i]), VSMALL));
+        }
+        return d;
+    }
+
+    // The round trip primitive -> conservative -> primitive of a case:
+    // p, U, the volume fractions and the densities of the phases present
+    void roundTrip(const label nMat, const label seed)
+    {
+        const stateCase c(8, nMat, seed, "stateTest" + std::to_string(nMat));
+        stateRun r(c.dir);
+        blastFluidState& s = r.state;
+        s.initialise(r.lowOrder, nullptr);
+        EXPECT_TRUE(s.current());
+
+        const scalar dp = maxRelDiff(s.p().primitiveField(), c.p);
+        scalar du = 0;
+        forAll(c.U, i)
+        {
+            du = max(du, mag(s.U()[i] - c.U[i])/mag(c.U[i]));
+        }
+        // The phase densities: relative error where the phase holds more
+        // than 1e-6 of the volume (informative: a phase of small volume
+        // fraction takes its density from a difference of partial
+        // densities), and the error of alpha_k rho_k relative to the
+        // mixture density (round-off whatever the fractions)
+        scalar da = 0, dr = 0, dm = 0, dar = 0;
+        const auto phase = [&]
+        (
+            const scalar a, const scalar rk, const scalar rkExact,
+            const scalar rhoMix
+        )
+        {
+            if (a > 1e-6) dr = max(dr, mag(rk - rkExact)/rkExact);
+            dar = max(dar, a*mag(rk - rkExact)/rhoMix);
+        };
+        const scalarField& rho = s.rho().primitiveField();
+        forAll(c.p, i)
+        {
+            // the mixture density of the phases
+            const scalar rhoExact =
+                nMat == 1 ? c.r2[i]
+              : nMat == 2 ? c.alpha1[i]*c.r1[i] + (1 - c.alpha1[i])*c.r2[i]
+              : c.alpha1[i]*c.r1[i] + c.alpha2[i]*c.r2[i]
+              + (1 - c.alpha1[i] - c.alpha2[i])*c.r3[i];
+            dm = max(dm, mag(rho[i] - rhoExact)/rhoExact);
+            if (nMat == 1) continue;
+            da = max(da, mag(s.alpha1Ptr()()[i] - c.alpha1[i]));
+            phase(c.alpha1[i], s.rho1Ptr()()[i], c.r1[i], rhoExact);
+            const scalar a2 = nMat == 3 ? c.alpha2[i] : 1 - c.alpha1[i];
+            phase(a2, s.rho2Ptr()()[i], c.r2[i], rhoExact);
+            if (nMat == 3)
+            {
+                da = max(da, mag(s.alpha2Ptr()()[i] - c.alpha2[i]));
+                const scalar a3 = 1 - c.alpha1[i] - c.alpha2[i];
+                phase(a3, s.rho3Ptr()()[i], c.r3[i], rhoExact);
+            }
+        }
+        std::cout << "  " << nMat << " material(s), " << c.p.size()
+            << " cells, p 1 MPa - 1 GPa: round trip max |dp|/p "
+            << sci(dp) << " (tol 1e-9), |dU|/|U| " << sci(du)
+            << " (tol 1e-12), |d alpha| " << sci(da)
+            << " (tol 1e-14), |d rho_k|/rho_k " << sci(dr)
+            << ", alpha_k |d rho_k|/rho " << sci(dar)
+            << " (tol 1e-14), mixture density " << sci(dm)
+            << " (tol 1e-14)" << std::endl;
+        EXPECT_LT(dp, 1e-9);
+        EXPECT_LT(du, 1e-12);
+        EXPECT_LT(da, 1e-14);
+        EXPECT_LT(dar, 1e-14);
+        EXPECT_LT(dm, 1e-14);
+    }
+}
+
+
+TEST(BlastFluidState, RoundTripOneMaterial)
+{
+    roundTrip(1, 11);
+}
+
+
+TEST(BlastFluidState, RoundTripTwoMaterials)
+{
+    roundTrip(2, 12);
+}
+
+
+TEST(BlastFluidState, RoundTripThreeMaterials)
+{
+    roundTrip(3, 13);
+}
+
+
+// A cell with negative internal energy and one with negative density:
+// not fatal, exactly those two marked and false; fatal, a FatalError
+// naming one of them; the state put back converts again
+TEST(BlastFluidState, BadCells)
+{
+    const stateCase c(8, 2, 21, "stateTestBad");
+    stateRun r(c.dir);
+    blastFluidState& s = r.state;
+    s.initialise(r.lowOrder, nullptr);
+
+    scalarField& rhoE = s.rhoE().primitiveFieldRef();
+    scalarField& rho = s.rho().primitiveFieldRef();
+    const scalar rhoE13 = rhoE[13], rho40 = rho[40];
+    rhoE[13] = -1e9;
+    rho[40] = -1;
+    s.invalidate();
+    EXPECT_FALSE(s.primitivesFromConservative(false, r.lowOrder, nullptr));
+    EXPECT_FALSE(s.current());
+    labelList marked;
+    forAll(r.lowOrder, i)
+    {
+        if (r.lowOrder[i] > 0) marked.append(i);
+    }
+    std::cout << "  cells marked for a first-order retry: "
+        << marked.size() << " (expected 2: 13 and 40)" << std::endl;
+    ASSERT_EQ(marked.size(), 2);
+    EXPECT_EQ(marked[0], 13);
+    EXPECT_EQ(marked[1], 40);
+
+    FatalError.throwExceptions();
+    std::string message;
+    try
+    {
+        s.primitivesFromConservative(true, r.lowOrder, nullptr);
+    }
+    catch (const Foam::error& e)
+    {
+        message = e.message();
+    }
+    FatalError.dontThrowExceptions();
+    std::cout << "  fatal: " << message.substr(0, 120) << std::endl;
+    // (the screening before the equation of state finds the negative
+    // density first)
+    EXPECT_TRUE
+    (
+        message.find("cell 13") != std::string::npos
+     || message.find("cell 40") != std::string::npos
+    );
+
+    rhoE[13] = rhoE13;
+    rho[40] = rho40;
+    r.lowOrder = 0;
+    EXPECT_TRUE(s.primitivesFromConservative(false, r.lowOrder, nullptr));
+    EXPECT_TRUE(s.current());
+    EXPECT_LT(maxRelDiff(s.p().primitiveField(), c.p), 1e-9);
+}
+
+
+// primitivesOfCells on a random third of the cells after their state
+// changed: every primitive bitwise that of the whole-mesh conversion
+TEST(BlastFluidState, CellsAsWholeMesh)
+{
+    for (const label nMat : {1, 2, 3})
+    {
+        const stateCase c
+        (
+            8, nMat, 30 + nMat, "stateTestCells" + std::to_string(nMat)
+        );
+        stateRun r(c.dir);
+        blastFluidState& s = r.state;
+        s.initialise(r.lowOrder, nullptr);
+        Random rnd(40 + nMat);
+        DynamicList<label> cells;
+        forAll(c.p, i)
+        {
+            if (rnd.sample01<scalar>() < 1.0/3)
+            {
+                cells.append(i);
+                s.rhoE()[i] *= 1.1;
+                s.rhoU()[i] *= 0.9;
+            }
+        }
+        s.primitivesOfCells(cells, nullptr);
+        const scalarField p(s.p().primitiveField());
+        const vectorField U(s.U().primitiveField());
+        const scalarField cs(s.c());
+        ASSERT_TRUE(s.primitivesFromConservative(false, r.lowOrder, nullptr));
+        label nDiff = 0;
+        forAll(p, i)
+        {
+            if (p[i] != s.p()[i] || U[i] != s.U()[i] || cs[i] != s.c()[i])
+            {
+                ++nDiff;
+            }
+        }
+        std::cout << "  " << nMat << " material(s): " << cells.size()
+            << " cells converted alone, " << nDiff
+            << " primitives differing from the whole mesh's (expected 0)"
+            << std::endl;
+        EXPECT_GT(cells.size(), 10);
+        EXPECT_EQ(nDiff, 0);
+    }
+}
+
+
+// Fields out of range as read: FatalIOError naming the field and the cell
+TEST(BlastFluidState, InputOutOfRange)
+{
+    FatalIOError.throwExceptions();
+    for (const bool pBad : {true, false})
+    {
+        const stateCase c
+        (
+            4, 2, 50, pBad ? "stateTestP" : "stateTestAlpha", pBad, !pBad
+        );
+        stateRun r(c.dir);
+        std::string message;
+        try
+        {
+            r.state.initialise(r.lowOrder, nullptr);
+        }
+        catch (const Foam::error& e)
+        {
+            message = e.message();
+        }
+        std::cout << "  " << (pBad ? "p = -1" : "alpha.water = 1.5")
+            << " in cell 5: " << message.substr(0, 100) << std::endl;
+        EXPECT_NE
+        (
+            message.find(pBad ? "p = -1" : "alpha.water = 1.5"),
+            std::string::npos
+        );
+        EXPECT_NE(message.find("cell 5"), std::string::npos);
+    }
+    FatalIOError.dontThrowExceptions();
+}
