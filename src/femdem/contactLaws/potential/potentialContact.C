@@ -975,31 +975,43 @@ void Foam::contactLaws::potential::buildList(const femdemSolid& solid)
     label ny;
     const label nx = binGrownBoxes(ny);
 
-    // Pairs as rows of the lower active index: count, then fill through
-    // the end pointers, then restore the starts and sort each row
+    // Pairs as rows of the lower active index: the grid visited once, the
+    // pairs not joined kept (lower and higher index) and counted per row,
+    // then filled into the rows through the end pointers, the starts
+    // restored and each row sorted
     fit(pairStart_, nA + 1);
     for (label a = 0; a <= nA; ++a) pairStart_[a] = 0;
-    auto count = [&](const label a, const label b)
-    {
-        if (!joined(solid, active_[a], active_[b])) ++pairStart_[min(a, b) + 1];
-    };
-    forEachGrownPair(nx, ny, count);
-    for (label a = 0; a < nA; ++a) pairStart_[a + 1] += pairStart_[a];
-    const label nPairs = pairStart_[nA];
-    fit(partner_, nPairs);
-    auto fill = [&](const label a, const label b)
+    // (room for the last build's pairs and 1/8 more: few reallocations)
+    const label room = partner_.size() + partner_.size()/8 + 16;
+    pairLo_.clear();
+    pairHi_.clear();
+    pairLo_.setCapacity(room);
+    pairHi_.setCapacity(room);
+    auto keep = [&](const label a, const label b)
     {
         if (!joined(solid, active_[a], active_[b]))
         {
-            partner_[pairStart_[min(a, b)]++] = active_[max(a, b)];
+            const label lo = min(a, b);
+            ++pairStart_[lo + 1];
+            pairLo_.append(lo);
+            pairHi_.append(max(a, b));
         }
     };
-    forEachGrownPair(nx, ny, fill);
+    forEachGrownPair(nx, ny, keep);
+    for (label a = 0; a < nA; ++a) pairStart_[a + 1] += pairStart_[a];
+    const label nPairs = pairStart_[nA];
+    fit(partner_, nPairs);
+    for (label k = 0; k < nPairs; ++k)
+    {
+        partner_[pairStart_[pairLo_[k]]++] = active_[pairHi_[k]];
+    }
     for (label a = nA; a > 0; --a) pairStart_[a] = pairStart_[a - 1];
     pairStart_[0] = 0;
-    // The grid is needed again only at the next build
+    // The grid and the pairs are needed again only at the next build
     cellStart_.clearStorage();
     sorted_.clearStorage();
+    pairLo_.clearStorage();
+    pairHi_.clearStorage();
     for (label a = 0; a < nA; ++a)
     {
         std::sort
@@ -1534,7 +1546,9 @@ std::size_t Foam::contactLaws::potential::memoryBytes() const
       + pairStart_.capacity()*sizeof(label)
       + partner_.capacity()*sizeof(label)
       + cellStart_.capacity()*sizeof(label)
-      + sorted_.capacity()*sizeof(label);
+      + sorted_.capacity()*sizeof(label)
+      + pairLo_.capacity()*sizeof(label)
+      + pairHi_.capacity()*sizeof(label);
 }
 
 
