@@ -503,9 +503,6 @@ void Foam::blastFluidSolver::assembleResidual()
         residual_.alpha2 = 0;
         residual_.alphaRho2 = 0;
     }
-    const scalarField* alphaPtr =
-        state_.multiPhase() ? &state_.alpha1Ptr()->primitiveField() : nullptr;
-
     for (label f = 0; f < addr_.nInternal(); ++f)
     {
         const label P = addr_.own()[f], N = addr_.nei()[f];
@@ -526,22 +523,11 @@ void Foam::blastFluidSolver::assembleResidual()
 
     if (state_.multiPhase())
     {
-        const scalarField& alpha = *alphaPtr;
-        for (label f = 0; f < addr_.nInternal(); ++f)
-        {
-            const label P = addr_.own()[f], N = addr_.nei()[f];
-            residual_.alphaRho1[P] -= F_.rhoY1[f];
-            residual_.alphaRho1[N] += F_.rhoY1[f];
-            // d alpha/dt = -div(alpha u) + alpha div(u)
-            residual_.alpha[P] -= F_.alpha[f] - alpha[P]*F_.uS[f];
-            residual_.alpha[N] += F_.alpha[f] - alpha[N]*F_.uS[f];
-        }
-        for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
-        {
-            const label P = addr_.own()[cf];
-            residual_.alphaRho1[P] -= F_.rhoY1[cf];
-            residual_.alpha[P] -= F_.alpha[cf] - alpha[P]*F_.uS[cf];
-        }
+        addMaterialResidual
+        (
+            F_.rhoY1, F_.alpha, state_.alpha1Ptr()->primitiveField(),
+            residual_.alphaRho1, residual_.alpha
+        );
     }
     if (state_.threePhase())
     {
@@ -769,6 +755,7 @@ void Foam::blastFluidSolver::addMaterialResidual
         const label P = addr_.own()[f], N = addr_.nei()[f];
         Rm[P] -= Fm[f];
         Rm[N] += Fm[f];
+        // d alpha/dt = -div(alpha u) + alpha div(u)
         Ra[P] -= Fa[f] - alpha[P]*F_.uS[f];
         Ra[N] += Fa[f] - alpha[N]*F_.uS[f];
     }
