@@ -14,20 +14,12 @@
 #include "Random.H"
 #include "blastFluidState.H"
 #include "blockMeshCase.H"
-#include <sstream>
-#include <iomanip>
 
 using namespace Foam;
+using blockMeshCase::sci;
 
 namespace
 {
-    std::string sci(const scalar x)
-    {
-        std::ostringstream os;
-        os << std::scientific << std::setprecision(2) << x;
-        return os.str();
-    }
-
     // The materials' dictionaries (water a stiffened gas, air and helium
     // ideal gases)
     const char* const materialDicts =

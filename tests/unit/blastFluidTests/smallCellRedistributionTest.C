@@ -16,20 +16,12 @@
 #include "smallCellRedistribution.H"
 #include "cutCellGeometry.H"
 #include "blockMeshCase.H"
-#include <sstream>
-#include <iomanip>
 
 using namespace Foam;
+using blockMeshCase::sci;
 
 namespace
 {
-    std::string sci(const scalar x)
-    {
-        std::ostringstream os;
-        os << std::scientific << std::setprecision(2) << x;
-        return os.str();
-    }
-
     // The mesh, the solver's face addressing and a redistribution of
     // nComp components, with random fluid fractions, apertures and content
     struct srdCase
