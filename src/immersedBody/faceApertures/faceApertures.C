@@ -512,6 +512,7 @@ Foam::faceApertures::faceApertures
     onLeft_(start.size(), 0),
     onRight_(start.size(), 0),
     lastTriangle_(start.size(), -1),
+    boundarySubsetSet_(false),
     faceState_(nullptr)
 {
     forAll(length_, f)
@@ -665,6 +666,7 @@ void Foam::faceApertures::update
 {
     boundaryFace_.setSize(length_.size());
     boundaryFace_ = false;
+    boundaryFaceList_.clear();
     boundaryBin_.setSize(index_.nBins());
     boundaryBin_ = false;
     for (const edge& e : boundaryEdges)
@@ -677,23 +679,38 @@ void Foam::faceApertures::update
         (
             min(min(a0, b0), min(a1, b1)),
             max(max(a0, b0), max(a1, b1)),
-            [&](const label f) { boundaryFace_[f] = true; }
+            [&](const label f)
+            {
+                if (!boundaryFace_[f])
+                {
+                    boundaryFace_[f] = true;
+                    boundaryFaceList_.append(f);
+                }
+            }
         );
     }
-    // Every bin a boundary face is listed in: a triangle that reaches the
-    // face shares one of them with it
-    forAll(boundaryFace_, f)
-    {
-        if (boundaryFace_[f])
+    // The boundary faces binned on their own (in ascending order, as the
+    // index lists them), and every bin one is listed in: a triangle that
+    // reaches the face shares one of them with it
+    Foam::sort(boundaryFaceList_);
+    index_.setSubset
+    (
+        boundaryFaceList_,
+        [&](const label f, vector2D& lo, vector2D& hi)
         {
-            index_.forEachBin
-            (
-                min(start_[f], end_[f]), max(start_[f], end_[f]),
-                [&](const label b) { boundaryBin_[b] = true; }
-            );
-        }
+            lo = min(start_[f], end_[f]);
+            hi = max(start_[f], end_[f]);
+        },
+        boundarySubset_
+    );
+    const labelList& first = boundarySubset_.start;
+    forAll(boundaryBin_, b)
+    {
+        boundaryBin_[b] = first[b + 1] > first[b];
     }
+    boundarySubsetSet_ = true;
     integrate(points0, points1, triangles);
+    boundarySubsetSet_ = false;
 }
 
 
@@ -807,11 +824,8 @@ void Foam::faceApertures::integrate
 )
 {
     const bool moving = &points0 != &points1;
-    covered_ = 0;
     nPairs_ = 0;
-    onLeft_ = 0;
-    onRight_ = 0;
-    lastTriangle_ = -1;
+    clippedFaces_.clear();
 
     // The faces the outline does not reach and whose state is known take
     // it (exactly what the midpoint test gives them); the midpoints of the
@@ -819,10 +833,15 @@ void Foam::faceApertures::integrate
     const labelUList* state = faceState_;
     unknownBin_.setSize(midpointIndex_.nBins());
     unknownBin_ = !state;
-    if (state)
+    if (!state)
+    {
+        covered_ = 0;
+    }
+    else
     {
         forAll(covered_, f)
         {
+            covered_[f] = 0;
             if (boundaryFace_[f] || !(length_[f] > 0)) continue;
             const label s = (*state)[f];
             if (s >= 0)
@@ -859,18 +878,27 @@ void Foam::faceApertures::integrate
         // The faces a boundary edge's swept box reaches, clipped over the
         // step: only where the triangle's box touches a bin with one (a
         // boundary face may be listed in other bins too: all candidates)
+        auto clip = [&](const label f)
+        {
+            if (lastTriangle_[f] == t) return;
+            if (lastTriangle_[f] < 0) clippedFaces_.append(f);
+            lastTriangle_[f] = t;
+            clipFace(f, lo, hi, x0, x1, moving);
+        };
         if (index_.touchesCounted(lo, hi, boundaryCount_))
         {
-            index_.forEachCandidate
-            (
-                lo, hi,
-                [&](const label f)
-                {
-                    if (!boundaryFace_[f] || lastTriangle_[f] == t) return;
-                    lastTriangle_[f] = t;
-                    clipFace(f, lo, hi, x0, x1, moving);
-                }
-            );
+            if (boundarySubsetSet_)
+            {
+                index_.forEachCandidateOf(boundarySubset_, lo, hi, clip);
+            }
+            else
+            {
+                index_.forEachCandidate
+                (
+                    lo, hi,
+                    [&](const label f) { if (boundaryFace_[f]) clip(f); }
+                );
+            }
         }
 
         // Every other face is covered all the step or open all the step,
@@ -900,11 +928,15 @@ void Foam::faceApertures::integrate
         );
     }
 
-    // Overlapping triangles (contact) could count a part twice
-    forAll(covered_, f)
+    // Overlapping triangles (contact) could count a part twice (only a
+    // clipped face can exceed its length or have parts on edges)
+    for (const label f : clippedFaces_)
     {
         covered_[f] =
             min(covered_[f] + max(onLeft_[f], onRight_[f]), length_[f]);
+        onLeft_[f] = 0;
+        onRight_[f] = 0;
+        lastTriangle_[f] = -1;
     }
 }
 

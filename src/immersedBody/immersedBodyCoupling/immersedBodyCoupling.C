@@ -432,23 +432,22 @@ void Foam::immersedBodyCoupling::setCellStateEnd()
     // of length 0, on empty patches, tell nothing)
     const boolList& reached = apertures_->boundaryFace();
     const scalarField& length = apertures_->length();
-    const cellList& cells = mesh_.cells();
+    const labelUList& own = mesh_.faceOwner();
+    const labelUList& nei = mesh_.faceNeighbour();
+    // (face by face over contiguous lists: the cells with such a face)
     cellStateEnd_.setSize(mesh_.nCells());
-    forAll(cellStateEnd_, c)
+    cellStateEnd_ = -1;
+    auto take = [&](const label c)
     {
-        label s = -1;
-        if (!boundaryCell_[c] && cellStateStart_[c] >= 0)
+        if (!boundaryCell_[c]) cellStateEnd_[c] = cellStateStart_[c];
+    };
+    forAll(own, f)
+    {
+        if (!reached[f] && length[f] > 0)
         {
-            for (const label f : cells[c])
-            {
-                if (!reached[f] && length[f] > 0)
-                {
-                    s = cellStateStart_[c];
-                    break;
-                }
-            }
+            take(own[f]);
+            if (f < nei.size()) take(nei[f]);
         }
-        cellStateEnd_[c] = s;
     }
 }
 

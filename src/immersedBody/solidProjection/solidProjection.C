@@ -269,22 +269,32 @@ void Foam::solidProjection::project
         }
     }
 
-    // The bins that the boundary cells' boxes touch: a triangle whose box
+    // The boundary cells binned on their own (a triangle visits those
+    // only), and the bins that their boxes touch: a triangle whose box
     // touches none of them overlaps no boundary cell
     boundaryBin_.setSize(index_.nBins());
     boundaryBin_ = !boundaryCell;
     if (boundaryCell)
     {
+        boundaryCells_.clear();
         forAll(*boundaryCell, celli)
         {
-            if ((*boundaryCell)[celli])
+            if ((*boundaryCell)[celli]) boundaryCells_.append(celli);
+        }
+        index_.setSubset
+        (
+            boundaryCells_,
+            [&](const label celli, vector2D& lo, vector2D& hi)
             {
-                index_.forEachBin
-                (
-                    cellLo_[celli], cellHi_[celli],
-                    [&](const label b) { boundaryBin_[b] = true; }
-                );
-            }
+                lo = cellLo_[celli];
+                hi = cellHi_[celli];
+            },
+            boundarySubset_
+        );
+        const labelList& start = boundarySubset_.start;
+        forAll(boundaryBin_, b)
+        {
+            boundaryBin_[b] = start[b + 1] > start[b];
         }
     }
 
@@ -304,28 +314,31 @@ void Foam::solidProjection::project
 
         // The cells the boundary crosses (all, without boundaryCell) are
         // clipped
+        auto clip = [&](const label celli)
+        {
+            if (lastTriangle_[celli] == t) return;
+            lastTriangle_[celli] = t;
+            scalar area;
+            vector2D centroid;
+            overlapArea(a, b, c, celli, area, centroid);
+            if (area <= 0) return;
+            addOverlap
+            (
+                celli, t, area, centroid,
+                barycentric(centroid, a, b, c), tri,
+                pointVelocities, alphaSolid, Usolid, overlaps
+            );
+        };
         if (index_.touchesCounted(lo, hi, boundaryCount_))
         {
-            index_.forEachCandidate
-            (
-                lo, hi,
-                [&](const label celli)
-                {
-                    if (boundaryCell && !(*boundaryCell)[celli]) return;
-                    if (lastTriangle_[celli] == t) return;
-                    lastTriangle_[celli] = t;
-                    scalar area;
-                    vector2D centroid;
-                    overlapArea(a, b, c, celli, area, centroid);
-                    if (area <= 0) return;
-                    addOverlap
-                    (
-                        celli, t, area, centroid,
-                        barycentric(centroid, a, b, c), tri,
-                        pointVelocities, alphaSolid, Usolid, overlaps
-                    );
-                }
-            );
+            if (boundaryCell)
+            {
+                index_.forEachCandidateOf(boundarySubset_, lo, hi, clip);
+            }
+            else
+            {
+                index_.forEachCandidate(lo, hi, clip);
+            }
         }
 
         // The others are all solid if their centroid is in a triangle
