@@ -432,22 +432,23 @@ void Foam::immersedBodyCoupling::setCellStateEnd()
     // of length 0, on empty patches, tell nothing)
     const boolList& reached = apertures_->boundaryFace();
     const scalarField& length = apertures_->length();
-    const labelUList& own = mesh_.faceOwner();
-    const labelUList& nei = mesh_.faceNeighbour();
-    // (face by face over contiguous lists: the cells with such a face)
+    const cellList& cells = mesh_.cells();
     cellStateEnd_.setSize(mesh_.nCells());
-    cellStateEnd_ = -1;
-    auto take = [&](const label c)
+    forAll(cellStateEnd_, c)
     {
-        if (!boundaryCell_[c]) cellStateEnd_[c] = cellStateStart_[c];
-    };
-    forAll(own, f)
-    {
-        if (!reached[f] && length[f] > 0)
+        label s = -1;
+        if (!boundaryCell_[c] && cellStateStart_[c] >= 0)
         {
-            take(own[f]);
-            if (f < nei.size()) take(nei[f]);
+            for (const label f : cells[c])
+            {
+                if (!reached[f] && length[f] > 0)
+                {
+                    s = cellStateStart_[c];
+                    break;
+                }
+            }
         }
+        cellStateEnd_[c] = s;
     }
 }
 
