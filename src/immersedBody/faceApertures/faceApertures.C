@@ -650,8 +650,6 @@ void Foam::faceApertures::update
 {
     boundaryFace_.setSize(length_.size());
     boundaryFace_ = true;
-    boundaryBin_.setSize(index_.nBins());
-    boundaryBin_ = true;
     integrate(points0, points1, triangles);
 }
 
@@ -667,8 +665,6 @@ void Foam::faceApertures::update
     boundaryFace_.setSize(length_.size());
     boundaryFace_ = false;
     boundaryFaceList_.clear();
-    boundaryBin_.setSize(index_.nBins());
-    boundaryBin_ = false;
     for (const edge& e : boundaryEdges)
     {
         const vector2D& a0 = points0[e.start()];
@@ -690,8 +686,8 @@ void Foam::faceApertures::update
         );
     }
     // The boundary faces binned on their own (in ascending order, as the
-    // index lists them), and every bin one is listed in: a triangle that
-    // reaches the face shares one of them with it
+    // index lists them): a triangle that reaches a face shares a bin with
+    // it
     Foam::sort(boundaryFaceList_);
     index_.setSubset
     (
@@ -703,11 +699,6 @@ void Foam::faceApertures::update
         },
         boundarySubset_
     );
-    const labelList& first = boundarySubset_.start;
-    forAll(boundaryBin_, b)
-    {
-        boundaryBin_[b] = first[b + 1] > first[b];
-    }
     boundarySubsetSet_ = true;
     integrate(points0, points1, triangles);
     boundarySubsetSet_ = false;
@@ -859,7 +850,6 @@ void Foam::faceApertures::integrate
         }
     }
 
-    index_.countFlagged(boundaryBin_, boundaryCount_);
     midpointIndex_.countFlagged(unknownBin_, unknownCount_);
 
     forAll(triangles, t)
@@ -876,8 +866,8 @@ void Foam::faceApertures::integrate
         }
 
         // The faces a boundary edge's swept box reaches, clipped over the
-        // step: only where the triangle's box touches a bin with one (a
-        // boundary face may be listed in other bins too: all candidates)
+        // step: those in the bins the triangle's box touches (a boundary
+        // face may be listed in other bins too: all candidates)
         auto clip = [&](const label f)
         {
             if (lastTriangle_[f] == t) return;
@@ -885,20 +875,17 @@ void Foam::faceApertures::integrate
             lastTriangle_[f] = t;
             clipFace(f, lo, hi, x0, x1, moving);
         };
-        if (index_.touchesCounted(lo, hi, boundaryCount_))
+        if (boundarySubsetSet_)
         {
-            if (boundarySubsetSet_)
-            {
-                index_.forEachCandidateOf(boundarySubset_, lo, hi, clip);
-            }
-            else
-            {
-                index_.forEachCandidate
-                (
-                    lo, hi,
-                    [&](const label f) { if (boundaryFace_[f]) clip(f); }
-                );
-            }
+            index_.forEachCandidateOf(boundarySubset_, lo, hi, clip);
+        }
+        else
+        {
+            index_.forEachCandidate
+            (
+                lo, hi,
+                [&](const label f) { if (boundaryFace_[f]) clip(f); }
+            );
         }
 
         // Every other face is covered all the step or open all the step,

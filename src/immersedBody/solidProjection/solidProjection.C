@@ -113,6 +113,7 @@ Foam::solidProjection::solidProjection
     cellHi_(cellArea_.size()),
     index_(cellVertices_, cellStart_),
     lastTriangle_(cellArea_.size(), -1),
+    triangleStamp_(0),
     lastSegment_(cellArea_.size(), -1),
     segmentTag_(0)
 {
@@ -241,7 +242,13 @@ void Foam::solidProjection::project
     alphaSolid = 0;
     Usolid = Zero;
     overlaps.clear();
-    lastTriangle_ = -1;
+    if (triangleStamp_ > labelMax - triangles.size())
+    {
+        lastTriangle_ = -1;
+        triangleStamp_ = 0;
+    }
+    const label stamp = triangleStamp_;
+    triangleStamp_ += triangles.size();
 
     // The cells known without a triangle: the covered ones take their
     // whole area now (so the centroid tests below pass them by); the
@@ -270,10 +277,7 @@ void Foam::solidProjection::project
     }
 
     // The boundary cells binned on their own (a triangle visits those
-    // only), and the bins that their boxes touch: a triangle whose box
-    // touches none of them overlaps no boundary cell
-    boundaryBin_.setSize(index_.nBins());
-    boundaryBin_ = !boundaryCell;
+    // only)
     if (boundaryCell)
     {
         boundaryCells_.clear();
@@ -291,14 +295,8 @@ void Foam::solidProjection::project
             },
             boundarySubset_
         );
-        const labelList& start = boundarySubset_.start;
-        forAll(boundaryBin_, b)
-        {
-            boundaryBin_[b] = start[b + 1] > start[b];
-        }
     }
 
-    index_.countFlagged(boundaryBin_, boundaryCount_);
     if (known)
     {
         centroidIndex_->countFlagged(unknownBin_, unknownCount_);
@@ -316,8 +314,8 @@ void Foam::solidProjection::project
         // clipped
         auto clip = [&](const label celli)
         {
-            if (lastTriangle_[celli] == t) return;
-            lastTriangle_[celli] = t;
+            if (lastTriangle_[celli] == stamp + t) return;
+            lastTriangle_[celli] = stamp + t;
             scalar area;
             vector2D centroid;
             overlapArea(a, b, c, celli, area, centroid);
@@ -329,16 +327,13 @@ void Foam::solidProjection::project
                 pointVelocities, alphaSolid, Usolid, overlaps
             );
         };
-        if (index_.touchesCounted(lo, hi, boundaryCount_))
+        if (boundaryCell)
         {
-            if (boundaryCell)
-            {
-                index_.forEachCandidateOf(boundarySubset_, lo, hi, clip);
-            }
-            else
-            {
-                index_.forEachCandidate(lo, hi, clip);
-            }
+            index_.forEachCandidateOf(boundarySubset_, lo, hi, clip);
+        }
+        else
+        {
+            index_.forEachCandidate(lo, hi, clip);
         }
 
         // The others are all solid if their centroid is in a triangle
