@@ -421,14 +421,35 @@ void Foam::solidProjection::overlapArea
         centroid = cellCentroid_[celli];
         return;
     }
+    // Into two fixed buffers (clipConvexFixed), falling back to the lists
+    // for a cell with more vertices than they hold
+    constexpr label capacity = 32;
+    vector2D buf0[capacity], buf1[capacity];
+    buf0[0] = a;
+    buf0[1] = b;
+    buf0[2] = c;
+    label n = 3;
+    vector2D* result = buf0;
+    if (inside != TRIANGLE_IN_CELL)
+    {
+        n = polygonClipping::clipConvexFixed
+        (
+            buf0, buf1, capacity, 3, cv, nv, result
+        );
+    }
+    if (n >= 0)
+    {
+        polygonClipping::areaAndCentroid
+        (
+            UList<vector2D>(result, n), area, centroid
+        );
+        return;
+    }
     polygon_.clear();
     polygon_.append(a);
     polygon_.append(b);
     polygon_.append(c);
-    if (inside != TRIANGLE_IN_CELL)
-    {
-        polygonClipping::clipConvex(polygon_, cv, nv, work_);
-    }
+    polygonClipping::clipConvex(polygon_, cv, nv, work_);
     polygonClipping::areaAndCentroid(polygon_, area, centroid);
 }
 
