@@ -699,6 +699,13 @@ void Foam::faceApertures::update
         },
         boundarySubset_
     );
+    const labelList& first = boundarySubset_.start;
+    boundaryBin_.setSize(index_.nBins());
+    forAll(boundaryBin_, b)
+    {
+        boundaryBin_[b] = first[b + 1] > first[b];
+    }
+    index_.countFlagged(boundaryBin_, boundaryCount_);
     boundarySubsetSet_ = true;
     integrate(points0, points1, triangles);
     boundarySubsetSet_ = false;
@@ -877,7 +884,10 @@ void Foam::faceApertures::integrate
         };
         if (boundarySubsetSet_)
         {
-            index_.forEachCandidateOf(boundarySubset_, lo, hi, clip);
+            if (index_.touchesCounted(lo, hi, boundaryCount_))
+            {
+                index_.forEachCandidateOf(boundarySubset_, lo, hi, clip);
+            }
         }
         else
         {

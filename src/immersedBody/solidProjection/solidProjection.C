@@ -295,6 +295,13 @@ void Foam::solidProjection::project
             },
             boundarySubset_
         );
+        const labelList& start = boundarySubset_.start;
+        boundaryBin_.setSize(index_.nBins());
+        forAll(boundaryBin_, b)
+        {
+            boundaryBin_[b] = start[b + 1] > start[b];
+        }
+        index_.countFlagged(boundaryBin_, boundaryCount_);
     }
 
     if (known)
@@ -327,13 +334,13 @@ void Foam::solidProjection::project
                 pointVelocities, alphaSolid, Usolid, overlaps
             );
         };
-        if (boundaryCell)
-        {
-            index_.forEachCandidateOf(boundarySubset_, lo, hi, clip);
-        }
-        else
+        if (!boundaryCell)
         {
             index_.forEachCandidate(lo, hi, clip);
+        }
+        else if (index_.touchesCounted(lo, hi, boundaryCount_))
+        {
+            index_.forEachCandidateOf(boundarySubset_, lo, hi, clip);
         }
 
         // The others are all solid if their centroid is in a triangle
