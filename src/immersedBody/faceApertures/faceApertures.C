@@ -512,7 +512,6 @@ Foam::faceApertures::faceApertures
     onLeft_(start.size(), 0),
     onRight_(start.size(), 0),
     lastTriangle_(start.size(), -1),
-    boundarySubsetSet_(false),
     faceState_(nullptr)
 {
     forAll(length_, f)
@@ -699,16 +698,7 @@ void Foam::faceApertures::update
         },
         boundarySubset_
     );
-    const labelList& first = boundarySubset_.start;
-    boundaryBin_.setSize(index_.nBins());
-    forAll(boundaryBin_, b)
-    {
-        boundaryBin_[b] = first[b + 1] > first[b];
-    }
-    index_.countFlagged(boundaryBin_, boundaryCount_);
-    boundarySubsetSet_ = true;
-    integrate(points0, points1, triangles);
-    boundarySubsetSet_ = false;
+    integrate(points0, points1, triangles, &boundarySubset_);
 }
 
 
@@ -818,7 +808,8 @@ void Foam::faceApertures::integrate
 (
     const UList<vector2D>& points0,
     const UList<vector2D>& points1,
-    const UList<FixedList<label, 3>>& triangles
+    const UList<FixedList<label, 3>>& triangles,
+    const cellBinIndex::subset* boundary
 )
 {
     const bool moving = &points0 != &points1;
@@ -882,11 +873,11 @@ void Foam::faceApertures::integrate
             lastTriangle_[f] = t;
             clipFace(f, lo, hi, x0, x1, moving);
         };
-        if (boundarySubsetSet_)
+        if (boundary)
         {
-            if (index_.touchesCounted(lo, hi, boundaryCount_))
+            if (index_.touchesSubset(lo, hi, *boundary))
             {
-                index_.forEachCandidateOf(boundarySubset_, lo, hi, clip);
+                index_.forEachCandidateOf(*boundary, lo, hi, clip);
             }
         }
         else

@@ -295,13 +295,6 @@ void Foam::solidProjection::project
             },
             boundarySubset_
         );
-        const labelList& start = boundarySubset_.start;
-        boundaryBin_.setSize(index_.nBins());
-        forAll(boundaryBin_, b)
-        {
-            boundaryBin_[b] = start[b + 1] > start[b];
-        }
-        index_.countFlagged(boundaryBin_, boundaryCount_);
     }
 
     if (known)
@@ -338,7 +331,7 @@ void Foam::solidProjection::project
         {
             index_.forEachCandidate(lo, hi, clip);
         }
-        else if (index_.touchesCounted(lo, hi, boundaryCount_))
+        else if (index_.touchesSubset(lo, hi, boundarySubset_))
         {
             index_.forEachCandidateOf(boundarySubset_, lo, hi, clip);
         }

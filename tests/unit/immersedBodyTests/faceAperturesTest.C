@@ -527,7 +527,7 @@ TEST(faceApertures, boundaryOnlyPathsEqualClippingEverywhere)
                     }
                 }
             }
-            if (folded) EXPECT_GT(fold.size(), 0);
+            if (folded) { EXPECT_GT(fold.size(), 0); }
             nFold += fold.size()/3;
             outline.append(fold);
             apAll.update(x0, x1, b.triangles);
