@@ -38,7 +38,9 @@ Foam::cellBinIndex::cellBinIndex
     binSize_(1, 1),
     invBinSize_(1, 1),
     nx_(1),
-    ny_(1)
+    ny_(1),
+    nbx_(1),
+    nby_(1)
 {
     const label nPolygons = polygonStart.size() - 1;
     // Polygons without vertices are in no bin and do not size the bins
@@ -65,6 +67,9 @@ Foam::cellBinIndex::cellBinIndex
         binSize_ = vector2D(span.x()/nx_, span.y()/ny_)*(1 + 1e-12);
         invBinSize_ = vector2D(1/binSize_.x(), 1/binSize_.y());
     }
+
+    nbx_ = (nx_ + blockSize - 1)/blockSize;
+    nby_ = (ny_ + blockSize - 1)/blockSize;
 
     // Two passes: count, then fill (CSR)
     binStart_.setSize(nx_*ny_ + 1, Zero);
@@ -101,28 +106,51 @@ Foam::cellBinIndex::cellBinIndex
 }
 
 
+// * * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+
+constexpr Foam::label Foam::cellBinIndex::blockSize;
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::cellBinIndex::countFlagged
-(
-    const UList<bool>& binFlag,
-    labelList& table
-) const
+void Foam::cellBinIndex::clearSet(binSet& s) const
 {
-    const label w = nx_ + 1;
-    table.setSize(w*(ny_ + 1));
+    const label nBlocks = nbx_*nby_;
+    if (s.flag.size() != nBins() || s.blockCount.size() != nBlocks)
+    {
+        s.flag.setSize(nBins());
+        s.flag = false;
+        s.blockCount.setSize(nBlocks);
+        s.blockCount = 0;
+        s.flagged.clear();
+        return;
+    }
+    for (const label b : s.flagged)
+    {
+        s.flag[b] = false;
+        s.blockCount[blockOf(b)] = 0;
+    }
+    s.flagged.clear();
+}
+
+
+void Foam::cellBinIndex::finishSet(binSet& s) const
+{
+    const label w = nbx_ + 1;
+    labelList& t = s.blockTable;
+    t.setSize(w*(nby_ + 1));
     for (label i = 0; i < w; ++i)
     {
-        table[i] = 0;
+        t[i] = 0;
     }
-    for (label j = 0; j < ny_; ++j)
+    for (label bj = 0; bj < nby_; ++bj)
     {
         label row = 0;
-        table[(j + 1)*w] = 0;
-        for (label i = 0; i < nx_; ++i)
+        t[(bj + 1)*w] = 0;
+        for (label bi = 0; bi < nbx_; ++bi)
         {
-            row += binFlag[j*nx_ + i];
-            table[(j + 1)*w + i + 1] = table[j*w + i + 1] + row;
+            row += s.blockCount[bj*nbx_ + bi];
+            t[(bj + 1)*w + bi + 1] = t[bj*w + bi + 1] + row;
         }
     }
 }

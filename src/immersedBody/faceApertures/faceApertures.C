@@ -514,11 +514,14 @@ Foam::faceApertures::faceApertures
     lastTriangle_(start.size(), -1),
     faceState_(nullptr)
 {
+    DynamicList<label> active(length_.size());
     forAll(length_, f)
     {
         length_[f] = mag(end_[f] - start_[f]);
         midpoint_[f] = 0.5*(start_[f] + end_[f]);
+        if (length_[f] > 0) active.append(f);
     }
+    activeFaces_.transfer(active);
 }
 
 
@@ -649,6 +652,7 @@ void Foam::faceApertures::update
 {
     boundaryFace_.setSize(length_.size());
     boundaryFace_ = true;
+    boundaryFaceList_ = activeFaces_;
     integrate(points0, points1, triangles);
 }
 
@@ -746,11 +750,16 @@ void Foam::faceApertures::faceStatesFromCells
     const labelUList& owner,
     const labelUList& neighbour,
     const labelUList& cellState,
+    const labelUList& faces,
     labelList& faceState
 )
 {
-    faceState.setSize(owner.size());
-    forAll(owner, f)
+    if (faceState.size() != owner.size())
+    {
+        faceState.setSize(owner.size());
+        faceState = -1;
+    }
+    for (const label f : faces)
     {
         label s = cellState[owner[f]];
         if (s < 0 && f < neighbour.size() && neighbour[f] >= 0)
@@ -820,18 +829,22 @@ void Foam::faceApertures::integrate
     // it (exactly what the midpoint test gives them); the midpoints of the
     // others are tested, in the bins that hold one
     const labelUList* state = faceState_;
-    unknownBin_.setSize(midpointIndex_.nBins());
-    unknownBin_ = !state;
+    midpointIndex_.clearSet(unknownBins_);
     if (!state)
     {
         covered_ = 0;
+        for (label b = 0; b < midpointIndex_.nBins(); ++b)
+        {
+            midpointIndex_.flagBin(unknownBins_, b);
+        }
     }
     else
     {
-        forAll(covered_, f)
+        // (covered_ of a face of length 0 stays 0: nothing clips it)
+        for (const label f : activeFaces_)
         {
             covered_[f] = 0;
-            if (boundaryFace_[f] || !(length_[f] > 0)) continue;
+            if (boundaryFace_[f]) continue;
             const label s = (*state)[f];
             if (s >= 0)
             {
@@ -842,13 +855,16 @@ void Foam::faceApertures::integrate
                 midpointIndex_.forEachBin
                 (
                     midpoint_[f], midpoint_[f],
-                    [&](const label b) { unknownBin_[b] = true; }
+                    [&](const label b)
+                    {
+                        midpointIndex_.flagBin(unknownBins_, b);
+                    }
                 );
             }
         }
     }
 
-    midpointIndex_.countFlagged(unknownBin_, unknownCount_);
+    midpointIndex_.finishSet(unknownBins_);
 
     forAll(triangles, t)
     {
@@ -894,7 +910,7 @@ void Foam::faceApertures::integrate
         // is in one bin of the midpoint index: visited once per triangle)
         const vector2D lo0(min(x0[0], min(x0[1], x0[2])));
         const vector2D hi0(max(x0[0], max(x0[1], x0[2])));
-        if (!midpointIndex_.touchesCounted(lo0, hi0, unknownCount_))
+        if (!midpointIndex_.touchesSet(lo0, hi0, unknownBins_, true))
         {
             continue;
         }

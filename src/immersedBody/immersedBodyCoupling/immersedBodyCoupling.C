@@ -265,7 +265,8 @@ void Foam::immersedBodyCoupling::startStep
     faceApertures::cellStatesOf(boundaryCell_, alphaWork_, cellStateStart_);
     faceApertures::faceStatesFromCells
     (
-        mesh_.faceOwner(), mesh_.faceNeighbour(), cellStateStart_, faceState_
+        mesh_.faceOwner(), mesh_.faceNeighbour(), cellStateStart_,
+        apertures_->activeFaces(), faceState_
     );
 
     // Apertures of every face over the linear motion from start to end
@@ -300,8 +301,13 @@ void Foam::immersedBodyCoupling::startStep
     // The two sides of a processor face (computed with the face reversed)
     // take the same aperture, so that both see the same flux and
     // neighbours
+    // (a face of length 0, on an empty patch, keeps aperture 1)
     scalarField& faceAp = faceApertureWork_;
-    faceAp.setSize(mesh_.nFaces());
+    if (faceAp.size() != mesh_.nFaces())
+    {
+        faceAp.setSize(mesh_.nFaces());
+        faceAp = 1;
+    }
     // What is left of a covered face by round-off (the covered pieces of
     // several triangles summed to a few ulp short of the face length) is
     // closed, as the gas fraction of a covered cell is (gasFraction).
@@ -311,7 +317,7 @@ void Foam::immersedBodyCoupling::startStep
     // run and not in another whose nodes differed by round-off (2 ranks:
     // the nodal forces summed in another order), a jump of 2.6e-3 in the
     // small cell's density
-    forAll(faceAp, f)
+    for (const label f : apertures_->activeFaces())
     {
         const scalar a = apertures_->aperture(f);
         faceAp[f] = a > roundOffFraction ? a : 0;
@@ -429,26 +435,40 @@ void Foam::immersedBodyCoupling::setCellStateEnd()
     // reaches in the step (faceApertures::boundaryFace) is covered all the
     // step or open all the step and lies in the cell's closure at both
     // ends: the cell's state at the end is its state at the start. (Faces
-    // of length 0, on empty patches, tell nothing)
-    const boolList& reached = apertures_->boundaryFace();
-    const scalarField& length = apertures_->length();
-    const cellList& cells = mesh_.cells();
+    // of length 0, on empty patches, tell nothing.) Such a face exists
+    // where fewer of the cell's faces were reached than it has: counted
+    // over the reached faces, not over every cell's faces
+    const labelList& own = mesh_.faceOwner();
+    const labelList& nei = mesh_.faceNeighbour();
+    const labelList& reached = apertures_->reachedFaces();
+    if (nActiveFaces_.size() != mesh_.nCells())
+    {
+        nActiveFaces_.setSize(mesh_.nCells());
+        nActiveFaces_ = 0;
+        nReachedFaces_.setSize(mesh_.nCells());
+        nReachedFaces_ = 0;
+        for (const label f : apertures_->activeFaces())
+        {
+            ++nActiveFaces_[own[f]];
+            if (f < nei.size()) ++nActiveFaces_[nei[f]];
+        }
+    }
+    for (const label f : reached)
+    {
+        ++nReachedFaces_[own[f]];
+        if (f < nei.size()) ++nReachedFaces_[nei[f]];
+    }
     cellStateEnd_.setSize(mesh_.nCells());
     forAll(cellStateEnd_, c)
     {
-        label s = -1;
-        if (!boundaryCell_[c] && cellStateStart_[c] >= 0)
-        {
-            for (const label f : cells[c])
-            {
-                if (!reached[f] && length[f] > 0)
-                {
-                    s = cellStateStart_[c];
-                    break;
-                }
-            }
-        }
-        cellStateEnd_[c] = s;
+        cellStateEnd_[c] =
+            !boundaryCell_[c] && nReachedFaces_[c] < nActiveFaces_[c]
+          ? cellStateStart_[c] : -1;
+    }
+    for (const label f : reached)
+    {
+        nReachedFaces_[own[f]] = 0;
+        if (f < nei.size()) nReachedFaces_[nei[f]] = 0;
     }
 }
 

@@ -256,8 +256,7 @@ void Foam::solidProjection::project
     const bool known = boundaryCell && cellState;
     if (known)
     {
-        unknownBin_.setSize(centroidIndex_->nBins());
-        unknownBin_ = false;
+        centroidIndex_->clearSet(unknownBins_);
         forAll(alphaSolid, celli)
         {
             const label s = (*cellState)[celli];
@@ -270,10 +269,14 @@ void Foam::solidProjection::project
                 centroidIndex_->forEachBin
                 (
                     cellCentroid_[celli], cellCentroid_[celli],
-                    [&](const label b) { unknownBin_[b] = true; }
+                    [&](const label b)
+                    {
+                        centroidIndex_->flagBin(unknownBins_, b);
+                    }
                 );
             }
         }
+        centroidIndex_->finishSet(unknownBins_);
     }
 
     // The boundary cells binned on their own (a triangle visits those
@@ -295,11 +298,6 @@ void Foam::solidProjection::project
             },
             boundarySubset_
         );
-    }
-
-    if (known)
-    {
-        centroidIndex_->countFlagged(unknownBin_, unknownCount_);
     }
 
     forAll(triangles, t)
@@ -345,7 +343,7 @@ void Foam::solidProjection::project
         if
         (
             !boundaryCell || twiceArea <= 0
-         || (known && !centroidIndex_->touchesCounted(lo, hi, unknownCount_))
+         || (known && !centroidIndex_->touchesSet(lo, hi, unknownBins_, true))
         )
         {
             continue;

@@ -569,7 +569,7 @@ TEST(faceApertures, boundaryOnlyPathsEqualClippingEverywhere)
             faceApertures::cellStatesOf(cut, alphaFast, cellState);
             faceApertures::faceStatesFromCells
             (
-                g.owner, g.neighbour, cellState, state
+                g.owner, g.neighbour, cellState, apKnown.activeFaces(), state
             );
             apKnown.update(x0, x1, b.triangles, outline, state);
             forAll(g.start, f)
@@ -727,21 +727,31 @@ TEST(outlineRegions, regionsGiveEveryCellItsCentroidTestsState)
 }
 
 
-TEST(cellBinIndex, summedAreaTableAgreesWithTheBinWalk)
+TEST(cellBinIndex, binSetAgreesWithTheBinWalk)
 {
-    // touchesCounted (four lookups in the flags' summed-area table) against
-    // touchesFlagged (the walk over the box's bins), random flags and boxes
-    // (inside, straddling and outside the grid)
+    // touchesSet (four lookups in the blocks' summed-area table, then, if
+    // exact, the walk) against touchesFlagged (the walk over the box's
+    // bins), random flags and boxes (inside, straddling and outside the
+    // grid): exact, the same answer; not exact, never a false no (a false
+    // yes only in a block holding a flagged bin). One set refilled at each
+    // density, so that the sparse clear is tested too (a bin left flagged
+    // would differ)
     const grid g = jitteredGrid(41, 29);
     const cellBinIndex index(g.cells.first, g.cells.second);
     Random rnd(5);
     boolList flag(index.nBins());
-    labelList table;
+    cellBinIndex::binSet set;
     label nTrue = 0, nQueries = 0, nDiffer = 0;
-    for (const scalar density : {0.0, 0.01, 0.2, 1.0})
+    label nFalseNo = 0, nFalseYes = 0;
+    for (const scalar density : {0.0, 0.01, 0.2, 1.0, 0.003, 0.0})
     {
-        forAll(flag, b) flag[b] = rnd.sample01<scalar>() < density;
-        index.countFlagged(flag, table);
+        index.clearSet(set);
+        forAll(flag, b)
+        {
+            flag[b] = rnd.sample01<scalar>() < density;
+            if (flag[b]) index.flagBin(set, b);
+        }
+        index.finishSet(set);
         for (label q = 0; q < 4000; ++q)
         {
             const vector2D a
@@ -753,7 +763,10 @@ TEST(cellBinIndex, summedAreaTableAgreesWithTheBinWalk)
                 0.3*rnd.sample01<scalar>(), 0.3*rnd.sample01<scalar>()
             );
             const bool walk = index.touchesFlagged(a, a + d, flag);
-            if (walk != index.touchesCounted(a, a + d, table)) ++nDiffer;
+            if (walk != index.touchesSet(a, a + d, set, true)) ++nDiffer;
+            const bool blocks = index.touchesSet(a, a + d, set, false);
+            if (walk && !blocks) ++nFalseNo;
+            nFalseYes += blocks && !walk;
             nTrue += walk;
             ++nQueries;
         }
@@ -761,7 +774,81 @@ TEST(cellBinIndex, summedAreaTableAgreesWithTheBinWalk)
     RecordProperty("queries", nQueries);
     RecordProperty("touching", nTrue);
     RecordProperty("differ", nDiffer);
+    RecordProperty("blocksFalseNo", nFalseNo);
+    RecordProperty("blocksFalseYes", nFalseYes);
+    std::cout<< "binSet: " << nQueries << " queries, " << nTrue
+        << " touching, exact differs " << nDiffer << ", blocks: false no "
+        << nFalseNo << ", false yes " << nFalseYes << std::endl;
     EXPECT_EQ(nDiffer, 0);
+    EXPECT_EQ(nFalseNo, 0);
+    // The blocks tell most of the boxes that touch nothing
+    EXPECT_LT(nFalseYes, (nQueries - nTrue)/4);
     EXPECT_GT(nTrue, nQueries/4);
     EXPECT_LT(nTrue, nQueries);
+}
+
+
+TEST(cellBinIndex, subsetVisitsInTheIndexOrder)
+{
+    // forEachCandidateOf against forEachCandidate filtered to the subset:
+    // the same polygons in the same order, for random subsets refilled
+    // into one subset (so that the sparse reset of its bins is tested)
+    const grid g = jitteredGrid(37, 23);
+    const cellBinIndex index(g.cells.first, g.cells.second);
+    const label nCells = g.cells.second.size() - 1;
+    auto box = [&](const label c, vector2D& lo, vector2D& hi)
+    {
+        lo = vector2D(GREAT, GREAT);
+        hi = vector2D(-GREAT, -GREAT);
+        for (label k = g.cells.second[c]; k < g.cells.second[c + 1]; ++k)
+        {
+            lo = min(lo, g.cells.first[k]);
+            hi = max(hi, g.cells.first[k]);
+        }
+    };
+    Random rnd(11);
+    cellBinIndex::subset sub;
+    boolList in(nCells);
+    label nQueries = 0, nDiffer = 0, nVisits = 0;
+    for (const scalar density : {0.3, 0.02, 1.0, 0.0, 0.1})
+    {
+        DynamicList<label> cells;
+        forAll(in, c)
+        {
+            in[c] = rnd.sample01<scalar>() < density;
+            if (in[c]) cells.append(c);
+        }
+        index.setSubset(cells, box, sub);
+        for (label q = 0; q < 500; ++q)
+        {
+            const vector2D a
+            (
+                1.4*rnd.sample01<scalar>() - 0.2, 1.4*rnd.sample01<scalar>() - 0.2
+            );
+            const vector2D d
+            (
+                0.3*rnd.sample01<scalar>(), 0.3*rnd.sample01<scalar>()
+            );
+            DynamicList<label> all, of;
+            index.forEachCandidate
+            (
+                a, a + d, [&](const label c) { if (in[c]) all.append(c); }
+            );
+            index.forEachCandidateOf
+            (
+                sub, a, a + d, [&](const label c) { of.append(c); }
+            );
+            if (all != of) ++nDiffer;
+            // touchesSubset may say yes next to the subset, never no
+            // where a polygon is visited
+            if (!of.empty() && !index.touchesSubset(a, a + d, sub)) ++nDiffer;
+            nVisits += of.size();
+            ++nQueries;
+        }
+    }
+    RecordProperty("queries", nQueries);
+    RecordProperty("visits", nVisits);
+    RecordProperty("differ", nDiffer);
+    EXPECT_EQ(nDiffer, 0);
+    EXPECT_GT(nVisits, nQueries);
 }
