@@ -3,7 +3,11 @@
 # stops cleanly. Case: tests/regression/coupledData/closedBoxSolid (free
 # rock disc thrown through air at rest in a periodic box) on 20x20 cells,
 # 38 triangles, adjustTimeStep no.
-#  1. divergence: deltaT 5e-5 (gas Courant number about 3.4; the cut-cell
+#  0. steps in parts: deltaT 5e-5 to 1e-3 with the default maxStepHalvings
+#     5: the steps the gas cannot take whole are taken in parts; the run
+#     reaches its end on its time schedule, mass and gas + solid energy
+#     conserved.
+#  1. divergence (maxStepHalvings 0): deltaT 5e-5 (gas Courant number about 3.4; the cut-cell
 #     step still runs at 1.4, deltaT 2e-5; the solid sub-cycles with its
 #     own stable step) written every 5 steps: the run stops at step 11
 #     (t = 5.5e-4) with exit status 1 and a message naming the time, the
@@ -43,11 +47,42 @@ sed -i 's/^targetSize .*/targetSize 0.02;/; s/nSegments 48/nSegments 12/' base/s
 (cd base && blockMesh > log.blockMesh 2>&1 && femdemMesh > log.femdemMesh 2>&1) \
     || fail "blockMesh/femdemMesh on the base case"
 
+# ------------------------------------------------------ steps in parts
+# The same too-large step with the default maxStepHalvings 5: each step
+# the gas cannot take whole is restored and taken in halves (each part with
+# its own geometry and solid step): the run reaches its end, every step
+# ends on the schedule, mass and gas + solid energy stay conserved
+rm -rf halved && cp -r base halved
+setEntry halved deltaT 5e-5
+setEntry halved endTime 1e-3
+setEntry halved writeInterval 1000
+(cd halved && jwlIbFoam > log.jwlIbFoam 2>&1) || { tail -5 halved/log.jwlIbFoam; fail "steps in parts: the run stopped"; }
+/usr/bin/python3 - halved "$data" <<'PY' || fail "steps in parts: not taken in parts, off schedule or not conservative"
+import re, sys
+case = sys.argv[1]
+sys.path.insert(0, sys.argv[2])
+import budget  # columns of budget.dat by their header names
+log = open(f"{case}/log.jwlIbFoam").read()
+parts = len(re.findall(r"^jwlIbFoam: the step to \S+ is taken in parts", log, re.M))
+nSteps = int(re.search(r"^Coupled steps taken in parts .*: (\d+)", log, re.M).group(1))
+times = [float(m.group(1)) for m in re.finditer(r"^Time = (\S+)", log, re.M)]
+offSchedule = max(abs(t - 5e-5*(k + 1)) for k, t in enumerate(times))/5e-5
+dE, dP, dm = budget.drifts(budget.load(f"{case}/postProcessing/jwlIbFoam/0/budget.dat"))
+print(f">> steps in parts: {len(times)} steps to {times[-1]:.6g} s, {nSteps} taken in parts "
+      f"({parts} halvings); time off the 5e-5 schedule {offSchedule:.1e} of a step (tolerance 1e-9); "
+      f"gas mass drift {dm:.1e} (tolerance 1e-12), gas + solid energy {dE:.1e} (tolerance 1e-6), "
+      f"momentum {dP:.1e} (tolerance 1e-8)")
+sys.exit(0 if nSteps > 0 and parts >= nSteps and times[-1] > 0.999e-3
+         and offSchedule < 1e-9 and dm < 1e-12 and dE < 1e-6 and dP < 1e-8 else 1)
+PY
+
 # ------------------------------------------------------------- divergence
+# (maxStepHalvings 0: the step the gas cannot take whole stops the run)
 rm -rf diverge && cp -r base diverge
 setEntry diverge deltaT 5e-5
 setEntry diverge endTime 1e-2
 setEntry diverge writeInterval 5
+echo "maxStepHalvings 0;" >> diverge/system/controlDict
 (cd diverge && jwlIbFoam > log.jwlIbFoam 2>&1)
 rc=$?
 log=diverge/log.jwlIbFoam

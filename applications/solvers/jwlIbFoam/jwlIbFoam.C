@@ -31,6 +31,11 @@ Description
          reaction), FEMDEM sub-cycled over dt with its own stable step,
          then the gas pays exactly the work of those forces
          (cutCellSolidStep.H): gas + solid energy is conserved.
+    A coupled step whose gas has no physical state even at first order
+    everywhere (a cell the solid crushes within the step) is restored and
+    taken in halves, quarters, ... (each part with its own geometry and
+    solid step), up to controlDict maxStepHalvings (default 5) halvings;
+    beyond, the run stops naming time and cell, the last written time kept.
     A case without constant/femdemProperties runs as a pure gas solver.
 
     Inputs: constant/thermophysicalProperties (blastMixture),
@@ -167,6 +172,19 @@ int main(int argc, char *argv[])
     // solid its sub-cycles (with a partitioned solid the gather of its work
     // displacement too, which waits for the slowest rank)
     double tGas = 0, tProject = 0, tFraction = 0, tForces = 0, tSolid = 0;
+    // Halvings of a coupled step before a gas state that is still
+    // non-physical stops the run (controlDict maxStepHalvings, default 5:
+    // parts of 1/32 of the step; 0: stop at the first such step)
+    const label maxStepHalvings =
+        runTime.controlDict().getOrDefault<label>("maxStepHalvings", 5);
+    if (maxStepHalvings < 0 || maxStepHalvings > 30)
+    {
+        FatalIOErrorInFunction(runTime.controlDict())
+            << "maxStepHalvings " << maxStepHalvings << ": must be 0 to 30"
+            << " (a coupled step taken in at most 2^maxStepHalvings parts)"
+            << exit(FatalIOError);
+    }
+    label nStepsInParts = 0;
 
     Info<< "\nStarting time loop\n" << endl;
 
@@ -178,37 +196,73 @@ int main(int argc, char *argv[])
         ++runTime;
         const scalar dt = runTime.deltaTValue();
 
+        label nSubSteps = 0;
         if (hasSolid)
         {
-            // The step's geometry: the solid now and moved on by dt v
-            const clockValue t0(clockValue::now());
-            couplingPtr->startStep
-            (
-                solidPtr->view(), solidPtr->x(), solidPtr->v(), dt
-            );
-            const clockValue t1(clockValue::now());
-            fluid.setFluidFraction
-            (
-                couplingPtr->fluidFractionStart(), couplingPtr->aperture()
-            );
-            fluid.setEmbeddedBoundary
-            (
-                couplingPtr->fluidFractionEnd(), couplingPtr->aperture()
-            );
-            tProject += t1 - t0;
-            tFraction += t1.elapsed();
+            // The coupled step; taken in halves, quarters ... where the gas
+            // cannot take it whole (a cell the solid crushes within the
+            // step, e.g. from 3 % to 0.1 % of its volume, that even first
+            // order everywhere leaves without a physical state): each part
+            // recomputes the geometry over its own length from the solid
+            // then, so that the gas sees the crushing in steps it can take
+            scalar done = 0;
+            scalar h = dt;
+            label halvings = 0;
+            while (done < dt)
+            {
+                // The last part ends exactly at the step's end
+                if (dt - done - h < 1e-9*dt) h = dt - done;
+                {
+                    // The part's geometry: the solid now and moved on by h v
+                    const clockValue t0(clockValue::now());
+                    couplingPtr->startStep
+                    (
+                        solidPtr->view(), solidPtr->x(), solidPtr->v(), h
+                    );
+                    const clockValue t1(clockValue::now());
+                    fluid.setFluidFraction
+                    (
+                        couplingPtr->fluidFractionStart(),
+                        couplingPtr->aperture()
+                    );
+                    fluid.setEmbeddedBoundary
+                    (
+                        couplingPtr->fluidFractionEnd(),
+                        couplingPtr->aperture()
+                    );
+                    tProject += t1 - t0;
+                    tFraction += t1.elapsed();
+                }
+                bool advanced = false;
+                {
+                    const clockValue t0(clockValue::now());
+                    advanced =
+                        fluid.advance(h, halvings < maxStepHalvings);
+                    tGas += t0.elapsed();
+                }
+                if (!advanced)
+                {
+                    ++halvings;
+                    h *= 0.5;
+                    Info<< "jwlIbFoam: the step to " << runTime.timeName()
+                        << " is taken in parts of " << h << " s (the gas"
+                        << " had no physical state after the whole part)"
+                        << endl;
+                    continue;
+                }
+                {
+                    const scalar dt = h;
+                    #include "cutCellSolidStep.H"
+                }
+                done += h;
+            }
+            if (halvings > 0) ++nStepsInParts;
         }
-
+        else
         {
             const clockValue t0(clockValue::now());
             fluid.advance(dt);
             tGas += t0.elapsed();
-        }
-
-        label nSubSteps = 0;
-        if (hasSolid)
-        {
-            #include "cutCellSolidStep.H"
         }
 
         #include "writeDiagnostics.H"
@@ -230,6 +284,11 @@ int main(int argc, char *argv[])
         << tProject << " s, setFluidFraction " << tFraction
         << " s, wallForces " << tForces << " s), solid " << tSolid << " s"
         << nl;
+    if (hasSolid)
+    {
+        Info<< "Coupled steps taken in parts (the gas could not take them"
+            << " whole): " << nStepsInParts << nl;
+    }
     if (crackGasPtr.valid()) crackGasPtr->reportSubSteps();
     if (partitionPtr.valid())
     {

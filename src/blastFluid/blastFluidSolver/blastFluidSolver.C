@@ -933,7 +933,7 @@ void Foam::blastFluidSolver::prepareRetry
 }
 
 
-void Foam::blastFluidSolver::advance(const scalar dt)
+bool Foam::blastFluidSolver::advance(const scalar dt, const bool mayFail)
 {
     if (burn_.valid())
     {
@@ -944,8 +944,7 @@ void Foam::blastFluidSolver::advance(const scalar dt)
     }
     if (cutCells_)
     {
-        advanceCutCells(dt);
-        return;
+        return advanceCutCells(dt, mayFail);
     }
     state_.saveConservative(start_);
 
@@ -970,7 +969,7 @@ void Foam::blastFluidSolver::advance(const scalar dt)
                     << returnReduce(label(sum(lowOrder_.primitiveField())), sumOp<label>())
                     << " cells" << endl;
             }
-            return;
+            return true;
         }
 
         if (attempt == maxAttempts - 1)
@@ -983,6 +982,7 @@ void Foam::blastFluidSolver::advance(const scalar dt)
 
     // First order everywhere failed as well: stop naming time and cell
     primitivesFromConservative(true);
+    return false;
 }
 
 

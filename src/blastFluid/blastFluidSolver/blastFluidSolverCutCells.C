@@ -539,7 +539,11 @@ bool Foam::blastFluidSolver::cutCellStage
 }
 
 
-void Foam::blastFluidSolver::advanceCutCells(const scalar dt)
+bool Foam::blastFluidSolver::advanceCutCells
+(
+    const scalar dt,
+    const bool mayFail
+)
 {
     fillEmptyCells();
     if (!state_.current())
@@ -583,18 +587,28 @@ void Foam::blastFluidSolver::advanceCutCells(const scalar dt)
             fluidFractionPtr_->primitiveFieldRef() =
                 phiEndPtr_->primitiveField();
             fluidFractionPtr_->correctBoundaryConditions();
-            return;
+            return true;
         }
+        // Redo the step from its start at first order around bad cells
+        if (srd_.valid()) srd_->setLost(lostMass0, lostEnergy0);
         if (attempt == maxAttempts - 1)
         {
             break;
         }
-
-        // Redo the step from its start at first order around bad cells
-        if (srd_.valid()) srd_->setLost(lostMass0, lostEnergy0);
         prepareRetry(attempt, maxAttempts);
     }
+    if (mayFail)
+    {
+        // Back to the step's start (the fluid fraction is still the
+        // start's): the caller takes the step in parts
+        state_.restoreConservative(start_);
+        state_.invalidate();
+        primitivesFromConservative(true);
+        ++nRetries_;
+        return false;
+    }
     primitivesFromConservative(true);
+    return false;
 }
 
 
