@@ -64,7 +64,7 @@ sys.path.insert(0, sys.argv[2])
 import budget  # columns of budget.dat by their header names
 log = open(f"{case}/log.jwlIbFoam").read()
 parts = len(re.findall(r"^jwlIbFoam: the step to \S+ is taken in parts", log, re.M))
-nSteps = int(re.search(r"^Coupled steps taken in parts .*: (\d+)", log, re.M).group(1))
+nSteps = int(re.search(r"^Coupled steps taken in parts .*?whole\): (\d+)", log, re.M).group(1))
 times = [float(m.group(1)) for m in re.finditer(r"^Time = (\S+)", log, re.M)]
 offSchedule = max(abs(t - 5e-5*(k + 1)) for k, t in enumerate(times))/5e-5
 dE, dP, dm = budget.drifts(budget.load(f"{case}/postProcessing/jwlIbFoam/0/budget.dat"))

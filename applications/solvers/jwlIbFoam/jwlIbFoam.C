@@ -287,7 +287,10 @@ int main(int argc, char *argv[])
     if (hasSolid)
     {
         Info<< "Coupled steps taken in parts (the gas could not take them"
-            << " whole): " << nStepsInParts << nl;
+            << " whole): " << nStepsInParts << "; crushed pockets vented: "
+            << returnReduce(fluid.nVented(), sumOp<label>()) << " ("
+            << returnReduce(fluid.ventedMass(), sumOp<scalar>())
+            << " kg of gas)" << nl;
     }
     if (crackGasPtr.valid()) crackGasPtr->reportSubSteps();
     if (partitionPtr.valid())

@@ -827,7 +827,10 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     stepOutEnergy_(0),
     outMass_(0),
     outEnergy_(0),
-    spreadEnergy_(0)
+    spreadEnergy_(0),
+    ringStamp_(0),
+    nVented_(0),
+    ventedMass_(0)
 {
     readControls();
 

@@ -38,9 +38,20 @@ Description
     processor face is computed from values exchanged through the coupled
     patches: a decomposed run gives the serial answer.
 
+    Crushed pockets (ventCrushedPockets, when the step's geometry is set):
+    a cell open to none of its faces over the step, less than half gas,
+    whose gas volume the solid reduces, is a crack narrower than the cell.
+    Its content goes to the nearest cells at least half gas (up to four
+    rings of face neighbours), in proportion to their gas volumes, and
+    it is closed for the step (fraction 0 at both ends, no wall terms), so
+    that no gas is squeezed without a wall that pushes back. A pocket whose
+    rings reach a cell next to a processor face is kept (the rings are not
+    searched across ranks).
+
 \*---------------------------------------------------------------------------*/
 
 #include "blastFluidSolver.H"
+#include "processorPolyPatch.H"
 #include "caseChecks.H"
 #include "calculatedFvPatchFields.H"
 
@@ -684,6 +695,142 @@ void Foam::blastFluidSolver::setFluidFraction
 }
 
 
+void Foam::blastFluidSolver::ventCrushedPockets
+(
+    scalarField& phiEnd,
+    const surfaceScalarField& aperture
+)
+{
+    scalarField& phi = fluidFractionPtr_->primitiveFieldRef();
+    const cellList& cells = mesh_.cells();
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    auto open = [&](const label f)
+    {
+        if (mesh_.isInternalFace(f)) return aperture[f] > 0;
+        const label patchi = patches.whichPatch(f);
+        const fvsPatchScalarField& ap = aperture.boundaryField()[patchi];
+        // (a face of an empty patch has no value: it is no face in 2D)
+        return ap.size() > 0 && ap[f - patches[patchi].start()] > 0;
+    };
+    pockets_.clear();
+    forAll(phi, i)
+    {
+        if (!(phi[i] > 0 && phi[i] < 0.5 && phiEnd[i] < phi[i])) continue;
+        bool closed = true;
+        for (const label f : cells[i])
+        {
+            if (open(f))
+            {
+                closed = false;
+                break;
+            }
+        }
+        if (closed) pockets_.append(i);
+    }
+    if (!returnReduce(pockets_.size() > 0, orOp<bool>()))
+    {
+        return;
+    }
+
+    if (ringMark_.size() != phi.size())
+    {
+        ringMark_.setSize(phi.size());
+        ringMark_ = 0;
+        ringStamp_ = 0;
+        nearProcessor_.setSize(phi.size());
+        nearProcessor_ = false;
+        forAll(patches, patchi)
+        {
+            if (!isA<processorPolyPatch>(patches[patchi])) continue;
+            for (const label c : patches[patchi].faceCells())
+            {
+                nearProcessor_[c] = true;
+            }
+        }
+    }
+    const labelListList& cellCells = mesh_.cellCells();
+    const scalarField& V = mesh_.V();
+    blastFluidState& st = state_;
+    scalarField& rho = st.rho().primitiveFieldRef();
+    vectorField& rhoU = st.rhoU().primitiveFieldRef();
+    scalarField& rhoE = st.rhoE().primitiveFieldRef();
+    UPtrList<scalarField> extra(4);
+    if (st.multiPhase())
+    {
+        extra.set(0, &st.alpha1Ptr()->primitiveFieldRef());
+        extra.set(1, &st.alphaRho1Ptr()->primitiveFieldRef());
+    }
+    if (st.threePhase())
+    {
+        extra.set(2, &st.alpha2Ptr()->primitiveFieldRef());
+        extra.set(3, &st.alphaRho2Ptr()->primitiveFieldRef());
+    }
+    const label maxRings = 4;
+    bool any = false;
+    for (const label i : pockets_)
+    {
+        // The first ring (of up to maxRings) with gas cells of at least
+        // half their volume (a pocket is less)
+        const label stamp = ++ringStamp_;
+        ringMark_[i] = stamp;
+        ring_.clear();
+        ring_.append(i);
+        ventTargets_.clear();
+        scalar gasVolume = 0;
+        bool nearProc = nearProcessor_[i];
+        for (label r = 0; r < maxRings && gasVolume <= 0 && !nearProc; ++r)
+        {
+            nextRing_.clear();
+            for (const label c : ring_)
+            {
+                for (const label j : cellCells[c])
+                {
+                    if (ringMark_[j] == stamp) continue;
+                    ringMark_[j] = stamp;
+                    nextRing_.append(j);
+                    nearProc = nearProc || nearProcessor_[j];
+                    // (a small cell could not hold it: its density
+                    // would be the pocket's content over a sliver)
+                    if (phi[j] >= 0.5)
+                    {
+                        ventTargets_.append(j);
+                        gasVolume += phi[j]*V[j];
+                    }
+                }
+            }
+            ring_.transfer(nextRing_);
+        }
+        if (nearProc || !(gasVolume > 0)) continue;
+        // Each target's conserved state grows by the pocket's content over
+        // the targets' gas volume (content C w_j/(phi_j V_j), w_j =
+        // phi_j V_j/gasVolume)
+        const scalar s = phi[i]*V[i]/gasVolume;
+        for (const label j : ventTargets_)
+        {
+            rho[j] += s*rho[i];
+            rhoU[j] += s*rhoU[i];
+            rhoE[j] += s*rhoE[i];
+            forAll(extra, k)
+            {
+                if (extra.set(k)) extra[k][j] += s*extra[k][i];
+            }
+            if (extra.set(0)) extra[0][j] = min(extra[0][j], scalar(1));
+            if (extra.set(2)) extra[2][j] = min(extra[2][j], scalar(1));
+        }
+        ++nVented_;
+        ventedMass_ += rho[i]*phi[i]*V[i];
+        phi[i] = 0;
+        phiEnd[i] = 0;
+        any = true;
+    }
+    if (any)
+    {
+        st.invalidate();
+        fluidFractionPtr_->correctBoundaryConditions();
+    }
+}
+
+
 void Foam::blastFluidSolver::setEmbeddedBoundary
 (
     const scalarField& phiEnd,
@@ -692,6 +839,7 @@ void Foam::blastFluidSolver::setEmbeddedBoundary
 {
     volScalarField& phi1Field = phiEndPtr_();
     phi1Field.primitiveFieldRef() = phiEnd;
+    ventCrushedPockets(phi1Field.primitiveFieldRef(), aperture);
     phi1Field.correctBoundaryConditions();
     geometry_->set(fluidFractionPtr_(), phi1Field, aperture);
 }
