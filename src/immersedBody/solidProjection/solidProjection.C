@@ -239,8 +239,6 @@ void Foam::solidProjection::project
 {
     alphaSolid.setSize(nCells());
     Usolid.setSize(nCells());
-    alphaSolid = 0;
-    Usolid = Zero;
     overlaps.clear();
     if (triangleStamp_ > labelMax - triangles.size())
     {
@@ -250,21 +248,30 @@ void Foam::solidProjection::project
     const label stamp = triangleStamp_;
     triangleStamp_ += triangles.size();
 
-    // The cells known without a triangle: the covered ones take their
-    // whole area now (so the centroid tests below pass them by); the
-    // centroid index's bins with a cell still to decide are flagged
+    // One pass over the cells: the fields cleared; the cells known
+    // without a triangle, the covered ones taking their whole area now (so
+    // the centroid tests below pass them by), and the centroid index's
+    // bins with a cell still to decide flagged; the boundary cells listed
+    // to be binned on their own (a triangle visits those only)
     const bool known = boundaryCell && cellState;
     if (known)
     {
         centroidIndex_->clearSet(unknownBins_);
-        forAll(alphaSolid, celli)
+    }
+    boundaryCells_.clear();
+    forAll(alphaSolid, celli)
+    {
+        Usolid[celli] = Zero;
+        scalar a = 0;
+        const bool boundary = boundaryCell && (*boundaryCell)[celli];
+        if (known)
         {
             const label s = (*cellState)[celli];
             if (s == 1)
             {
-                alphaSolid[celli] = cellArea_[celli];
+                a = cellArea_[celli];
             }
-            else if (s < 0 && !(*boundaryCell)[celli])
+            else if (s < 0 && !boundary)
             {
                 centroidIndex_->forEachBin
                 (
@@ -276,18 +283,15 @@ void Foam::solidProjection::project
                 );
             }
         }
+        alphaSolid[celli] = a;
+        if (boundary) boundaryCells_.append(celli);
+    }
+    if (known)
+    {
         centroidIndex_->finishSet(unknownBins_);
     }
-
-    // The boundary cells binned on their own (a triangle visits those
-    // only)
     if (boundaryCell)
     {
-        boundaryCells_.clear();
-        forAll(*boundaryCell, celli)
-        {
-            if ((*boundaryCell)[celli]) boundaryCells_.append(celli);
-        }
         index_.setSubset
         (
             boundaryCells_,
