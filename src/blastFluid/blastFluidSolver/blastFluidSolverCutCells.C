@@ -754,16 +754,17 @@ void Foam::blastFluidSolver::ventCrushedPockets
     scalarField& rho = st.rho().primitiveFieldRef();
     vectorField& rhoU = st.rhoU().primitiveFieldRef();
     scalarField& rhoE = st.rhoE().primitiveFieldRef();
-    UPtrList<scalarField> extra(4);
+    // The material contents (volume fractions 0 and 2 are capped at 1)
+    scalarField* extra[4] = {nullptr, nullptr, nullptr, nullptr};
     if (st.multiPhase())
     {
-        extra.set(0, &st.alpha1Ptr()->primitiveFieldRef());
-        extra.set(1, &st.alphaRho1Ptr()->primitiveFieldRef());
+        extra[0] = &st.alpha1Ptr()->primitiveFieldRef();
+        extra[1] = &st.alphaRho1Ptr()->primitiveFieldRef();
     }
     if (st.threePhase())
     {
-        extra.set(2, &st.alpha2Ptr()->primitiveFieldRef());
-        extra.set(3, &st.alphaRho2Ptr()->primitiveFieldRef());
+        extra[2] = &st.alpha2Ptr()->primitiveFieldRef();
+        extra[3] = &st.alphaRho2Ptr()->primitiveFieldRef();
     }
     const label maxRings = 4;
     bool any = false;
@@ -810,12 +811,12 @@ void Foam::blastFluidSolver::ventCrushedPockets
             rho[j] += s*rho[i];
             rhoU[j] += s*rhoU[i];
             rhoE[j] += s*rhoE[i];
-            forAll(extra, k)
+            for (scalarField* x : extra)
             {
-                if (extra.set(k)) extra[k][j] += s*extra[k][i];
+                if (x) (*x)[j] += s*(*x)[i];
             }
-            if (extra.set(0)) extra[0][j] = min(extra[0][j], scalar(1));
-            if (extra.set(2)) extra[2][j] = min(extra[2][j], scalar(1));
+            if (extra[0]) (*extra[0])[j] = min((*extra[0])[j], scalar(1));
+            if (extra[2]) (*extra[2])[j] = min((*extra[2])[j], scalar(1));
         }
         ++nVented_;
         ventedMass_ += rho[i]*phi[i]*V[i];
