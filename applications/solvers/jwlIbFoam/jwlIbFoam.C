@@ -199,64 +199,7 @@ int main(int argc, char *argv[])
         label nSubSteps = 0;
         if (hasSolid)
         {
-            // The coupled step; taken in halves, quarters ... where the gas
-            // cannot take it whole (a cell the solid crushes within the
-            // step, e.g. from 3 % to 0.1 % of its volume, that even first
-            // order everywhere leaves without a physical state): each part
-            // recomputes the geometry over its own length from the solid
-            // then, so that the gas sees the crushing in steps it can take
-            scalar done = 0;
-            scalar h = dt;
-            label halvings = 0;
-            while (done < dt)
-            {
-                // The last part ends exactly at the step's end
-                if (dt - done - h < 1e-9*dt) h = dt - done;
-                {
-                    // The part's geometry: the solid now and moved on by h v
-                    const clockValue t0(clockValue::now());
-                    couplingPtr->startStep
-                    (
-                        solidPtr->view(), solidPtr->x(), solidPtr->v(), h
-                    );
-                    const clockValue t1(clockValue::now());
-                    fluid.setFluidFraction
-                    (
-                        couplingPtr->fluidFractionStart(),
-                        couplingPtr->aperture()
-                    );
-                    fluid.setEmbeddedBoundary
-                    (
-                        couplingPtr->fluidFractionEnd(),
-                        couplingPtr->aperture()
-                    );
-                    tProject += t1 - t0;
-                    tFraction += t1.elapsed();
-                }
-                bool advanced = false;
-                {
-                    const clockValue t0(clockValue::now());
-                    advanced =
-                        fluid.advance(h, halvings < maxStepHalvings);
-                    tGas += t0.elapsed();
-                }
-                if (!advanced)
-                {
-                    ++halvings;
-                    h *= 0.5;
-                    Info<< "jwlIbFoam: the step to " << runTime.timeName()
-                        << " is taken in parts of " << h << " s (the gas"
-                        << " had no physical state after the whole part)"
-                        << endl;
-                    continue;
-                }
-                {
-                    const scalar dt = h;
-                    #include "cutCellSolidStep.H"
-                }
-                done += h;
-            }
-            if (halvings > 0) ++nStepsInParts;
+            #include "coupledStepInParts.H"
         }
         else
         {

@@ -828,7 +828,6 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     outMass_(0),
     outEnergy_(0),
     spreadEnergy_(0),
-    ringStamp_(0),
     nVented_(0),
     ventedMass_(0)
 {

@@ -732,11 +732,8 @@ void Foam::blastFluidSolver::ventCrushedPockets
         return;
     }
 
-    if (ringMark_.size() != phi.size())
+    if (nearProcessor_.size() != phi.size())
     {
-        ringMark_.setSize(phi.size());
-        ringMark_ = 0;
-        ringStamp_ = 0;
         nearProcessor_.setSize(phi.size());
         nearProcessor_ = false;
         forAll(patches, patchi)
@@ -748,7 +745,6 @@ void Foam::blastFluidSolver::ventCrushedPockets
             }
         }
     }
-    const labelListList& cellCells = mesh_.cellCells();
     const scalarField& V = mesh_.V();
     blastFluidState& st = state_;
     scalarField& rho = st.rho().primitiveFieldRef();
@@ -770,44 +766,29 @@ void Foam::blastFluidSolver::ventCrushedPockets
     bool any = false;
     for (const label i : pockets_)
     {
-        // The first ring (of up to maxRings) with gas cells of at least
-        // half their volume (a pocket is less)
-        const label stamp = ++ringStamp_;
-        ringMark_[i] = stamp;
-        ring_.clear();
-        ring_.append(i);
-        ventTargets_.clear();
+        // The first ring (of up to maxRings) with cells at least half gas
+        // (a pocket is less; a small cell could not hold it: its density
+        // would be the pocket's content over a sliver)
         scalar gasVolume = 0;
         bool nearProc = nearProcessor_[i];
-        for (label r = 0; r < maxRings && gasVolume <= 0 && !nearProc; ++r)
-        {
-            nextRing_.clear();
-            for (const label c : ring_)
+        srd().forEachRing
+        (
+            i, maxRings,
+            [&](const label j)
             {
-                for (const label j : cellCells[c])
-                {
-                    if (ringMark_[j] == stamp) continue;
-                    ringMark_[j] = stamp;
-                    nextRing_.append(j);
-                    nearProc = nearProc || nearProcessor_[j];
-                    // (a small cell could not hold it: its density
-                    // would be the pocket's content over a sliver)
-                    if (phi[j] >= 0.5)
-                    {
-                        ventTargets_.append(j);
-                        gasVolume += phi[j]*V[j];
-                    }
-                }
-            }
-            ring_.transfer(nextRing_);
-        }
+                nearProc = nearProc || nearProcessor_[j];
+                if (phi[j] >= 0.5) gasVolume += phi[j]*V[j];
+            },
+            [&]() { return gasVolume > 0 || nearProc; }
+        );
         if (nearProc || !(gasVolume > 0)) continue;
         // Each target's conserved state grows by the pocket's content over
         // the targets' gas volume (content C w_j/(phi_j V_j), w_j =
         // phi_j V_j/gasVolume)
         const scalar s = phi[i]*V[i]/gasVolume;
-        for (const label j : ventTargets_)
+        for (const label j : srd().lastRing())
         {
+            if (phi[j] < 0.5) continue;
             rho[j] += s*rho[i];
             rhoU[j] += s*rhoU[i];
             rhoE[j] += s*rhoE[i];

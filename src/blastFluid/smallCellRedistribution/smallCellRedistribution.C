@@ -196,40 +196,26 @@ void Foam::smallCellRedistribution::depositOrphans
     // face) is the content lost, and reported
     const label maxRings = 4;
     cutCellFields& w = w_;
-    const labelListList& cellCells = mesh_.cellCells();
     const scalarField& V = mesh_.V();
     forAll(w.orphans, o)
     {
         const label seed = w.orphans[o];
         const FixedList<scalar, cutCellFields::maxComponents>& c =
             w.orphanContent[o];
-        ++w.searchStamp;
-        w.searchMark[seed] = w.searchStamp;
-        w.ring.clear();
-        w.ring.append(seed);
         scalar gasVolume = 0;
-        for (label r = 0; r < maxRings && gasVolume <= 0; ++r)
-        {
-            w.nextRing.clear();
-            for (const label i : w.ring)
-            {
-                for (const label j : cellCells[i])
-                {
-                    if (w.searchMark[j] == w.searchStamp) continue;
-                    w.searchMark[j] = w.searchStamp;
-                    w.nextRing.append(j);
-                    if (phi[j] > 0) gasVolume += phi[j]*V[j];
-                }
-            }
-            w.ring.transfer(w.nextRing);
-        }
+        forEachRing
+        (
+            seed, maxRings,
+            [&](const label j) { if (phi[j] > 0) gasVolume += phi[j]*V[j]; },
+            [&]() { return gasVolume > 0; }
+        );
         if (gasVolume <= 0)
         {
             lostMass_ += c[0];
             lostEnergy_ += c[4];
             continue;
         }
-        for (const label j : w.ring)
+        for (const label j : lastRing())
         {
             if (phi[j] <= 0) continue;
             // Content per cell volume: C w_j/V_j, w_j = phi_j V_j/sum

@@ -432,7 +432,7 @@ void Foam::immersedBodyCoupling::setCellStateEnd()
 {
     // A cell the outline crosses neither at the start nor at the end is
     // all solid or all gas at both; a face of it that no outline edge
-    // reaches in the step (faceApertures::boundaryFace) is covered all the
+    // reaches in the step (faceApertures::reachedFaces) is covered all the
     // step or open all the step and lies in the cell's closure at both
     // ends: the cell's state at the end is its state at the start. (Faces
     // of length 0, on empty patches, tell nothing.) Such a face exists
