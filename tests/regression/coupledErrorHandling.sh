@@ -7,6 +7,7 @@
 #     5: the steps the gas cannot take whole are taken in parts; the run
 #     reaches its end on its time schedule, mass and gas + solid energy
 #     conserved.
+#     maxStepHalvings -1: a FatalIOError naming controlDict and the entry.
 #  1. divergence (maxStepHalvings 0): deltaT 5e-5 (gas Courant number about 3.4; the cut-cell
 #     step still runs at 1.4, deltaT 2e-5; the solid sub-cycles with its
 #     own stable step) written every 5 steps: the run stops at step 11
@@ -75,6 +76,17 @@ print(f">> steps in parts: {len(times)} steps to {times[-1]:.6g} s, {nSteps} tak
 sys.exit(0 if nSteps > 0 and parts >= nSteps and times[-1] > 0.999e-3
          and offSchedule < 1e-9 and dm < 1e-12 and dE < 1e-6 and dP < 1e-8 else 1)
 PY
+
+# A negative maxStepHalvings: a FatalIOError naming controlDict and the
+# entry, no signal
+rm -rf badHalvings && cp -r base badHalvings
+echo "maxStepHalvings -1;" >> badHalvings/system/controlDict
+(cd badHalvings && jwlIbFoam > log.jwlIbFoam 2>&1) && fail "maxStepHalvings -1: accepted"
+grep -q "FOAM FATAL IO ERROR" badHalvings/log.jwlIbFoam && grep -q "badHalvings/system/controlDict" badHalvings/log.jwlIbFoam \
+    && grep -q "maxStepHalvings -1: must be 0 to 30" badHalvings/log.jwlIbFoam \
+    && ! grep -v '^trapFpe' badHalvings/log.jwlIbFoam | grep -qiE 'segmentation|sigfpe|stack trace' \
+    || { tail -6 badHalvings/log.jwlIbFoam; fail "maxStepHalvings -1: no FatalIOError naming controlDict and the entry"; }
+echo ">> maxStepHalvings -1: rejected ($(grep -m1 -o 'maxStepHalvings -1: must be 0 to 30' badHalvings/log.jwlIbFoam))"
 
 # ------------------------------------------------------------- divergence
 # (maxStepHalvings 0: the step the gas cannot take whole stops the run)
