@@ -233,7 +233,8 @@ int main(int argc, char *argv[])
             << " whole): " << nStepsInParts << "; crushed pockets vented: "
             << returnReduce(fluid.nVented(), sumOp<label>()) << " ("
             << returnReduce(fluid.ventedMass(), sumOp<scalar>())
-            << " kg of gas)" << nl;
+            << " kg of gas); cells mixed for a negative internal energy: "
+            << returnReduce(fluid.nMixed(), sumOp<label>()) << nl;
     }
     if (crackGasPtr.valid()) crackGasPtr->reportSubSteps();
     if (partitionPtr.valid())

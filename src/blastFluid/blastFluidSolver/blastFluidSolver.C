@@ -829,7 +829,8 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     outEnergy_(0),
     spreadEnergy_(0),
     nVented_(0),
-    ventedMass_(0)
+    ventedMass_(0),
+    nMixed_(0)
 {
     readControls();
 

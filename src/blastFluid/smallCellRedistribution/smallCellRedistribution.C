@@ -418,5 +418,71 @@ void Foam::smallCellRedistribution::redistribute
     links_ = nullptr;
 }
 
+Foam::label Foam::smallCellRedistribution::mixUntilPositive
+(
+    const scalarField& phi,
+    conservedFields& c,
+    const boolList& seed,
+    const boolList& skip,
+    const label maxRings
+)
+{
+    const scalarField& V = mesh_.V();
+    const label nc = phi.size();
+    const auto noEnergy = [&](const label i)
+    {
+        return !(c.rho[i] > 0 && c.rhoE[i] > 0.5*magSqr(c.rhoU[i])/c.rho[i]);
+    };
+    // The material contents mixed like the rest (empty when not tracked)
+    scalarField* extra[4] = {&c.alpha, &c.alphaRho1, &c.alpha2, &c.alphaRho2};
+    mixed_.clear();
+    for (label i = 0; i < nc; ++i)
+    {
+        if (!seed[i] || !(phi[i] > 0) || !noEnergy(i)) continue;
+        scalar Vg = phi[i]*V[i];
+        scalar m = c.rho[i]*V[i], E = c.rhoE[i]*V[i];
+        vector mU = c.rhoU[i]*V[i];
+        bool blocked = skip[i];
+        group_.clear();
+        group_.append(i);
+        const auto positive = [&]() { return m > 0 && E > 0.5*magSqr(mU)/m; };
+        forEachRing
+        (
+            i, maxRings,
+            [&](const label j)
+            {
+                blocked = blocked || skip[j];
+                if (!(phi[j] > 0)) return;
+                group_.append(j);
+                Vg += phi[j]*V[j];
+                m += c.rho[j]*V[j];
+                mU += c.rhoU[j]*V[j];
+                E += c.rhoE[j]*V[j];
+            },
+            [&]() { return blocked || positive(); }
+        );
+        if (blocked || !positive()) continue;
+        scalar x[4] = {0, 0, 0, 0};
+        for (label k = 0; k < 4; ++k)
+        {
+            if (extra[k]->size() != nc) continue;
+            for (const label j : group_) x[k] += (*extra[k])[j]*V[j];
+        }
+        for (const label j : group_)
+        {
+            const scalar w = phi[j]/Vg;
+            c.rho[j] = w*m;
+            c.rhoU[j] = w*mU;
+            c.rhoE[j] = w*E;
+            for (label k = 0; k < 4; ++k)
+            {
+                if (extra[k]->size() == nc) (*extra[k])[j] = w*x[k];
+            }
+            mixed_.append(j);
+        }
+    }
+    return mixed_.size();
+}
+
 
 // ************************************************************************* //

@@ -209,6 +209,122 @@ TEST(SmallCellRedistribution, ConservesEveryComponent)
 }
 
 
+// mixUntilPositive on random contents (two materials) with cells of
+// negative internal energy: the seeds that a group of at most three rings
+// can make positive end positive, with their groups at one intrinsic
+// state; a hopeless seed (its deficit more than the rings hold) and a seed
+// whose rings reach a skipped cell stay bitwise as they were, as does
+// every cell not listed as mixed; every component's total is conserved
+TEST(SmallCellRedistribution, MixUntilPositive)
+{
+    scalar worstTotal = 0, worstGroup = 0;
+    label nMixed = 0, nFixed = 0, nSeeds = 0;
+    for (const label n : {12, 30})
+    {
+        srdCase s(n, 7);
+        s.randomise(91*n);
+        scalarField& p = s.phi.primitiveFieldRef();
+        const labelListList& cc = s.mesh.cellCells();
+        const label nc = p.size();
+        boolList seed(nc, false), skip(nc, false);
+        // Seeds in the mesh's interior, apart from each other: e from
+        // -1e5 to -4e5 J/kg against the others' 1e5 to 2e5
+        Random rnd(3*n);
+        labelList seeds;
+        for (label i = 2*n + 2; i < nc - 2*n - 2; i += 7*n/3 + 5)
+        {
+            p[i] = 0.5 + 0.5*rnd.sample01<scalar>();
+            s.set
+            (
+                i, 1 + 10*rnd.sample01<scalar>(), vector(30, -20, 0),
+                -1e5*(1 + 3*rnd.sample01<scalar>()), 0.3
+            );
+            seed[i] = true;
+            seeds.append(i);
+        }
+        // A hopeless seed, and one next to a skipped cell
+        const label hopeless = seeds[0], blocked = seeds[1];
+        s.set(hopeless, 5, vector(30, -20, 0), -1e12, 0.3);
+        skip[cc[blocked][0]] = true;
+        nSeeds += seeds.size();
+
+        scalarField before(7), scale(7, 0);
+        for (label k = 0; k < 7; ++k) before[k] = s.total(k);
+        const scalarField& V = s.mesh.V();
+        forAll(V, i)
+        {
+            scale[0] += mag(s.c.rho[i])*V[i];
+            scale[1] += mag(s.c.rhoU[i].x())*V[i];
+            scale[2] += mag(s.c.rhoU[i].y())*V[i];
+            scale[4] += mag(s.c.rhoE[i])*V[i];
+            scale[5] += mag(s.c.alphaRho1[i])*V[i];
+            scale[6] += mag(s.c.alpha[i])*V[i];
+        }
+        const conservedFields c0(s.c);
+        const label nm = s.srd.mixUntilPositive(p, s.c, seed, skip, 3);
+        nMixed += nm;
+        for (label k = 0; k < 7; ++k)
+        {
+            if (k == 3) continue;
+            worstTotal =
+                max(worstTotal, mag(s.total(k) - before[k])/scale[k]);
+        }
+        boolList mixed(nc, false);
+        for (const label j : s.srd.mixedCells()) mixed[j] = true;
+        EXPECT_EQ(label(s.srd.mixedCells().size()), nm);
+        const auto e = [&](const label i)
+        {
+            return (s.c.rhoE[i] - 0.5*magSqr(s.c.rhoU[i])/s.c.rho[i])/s.c.rho[i];
+        };
+        for (const label i : seeds)
+        {
+            if (i == hopeless || i == blocked)
+            {
+                EXPECT_FALSE(mixed[i]) << "cell " << i;
+                continue;
+            }
+            EXPECT_TRUE(mixed[i]) << "cell " << i;
+            EXPECT_GT(e(i), 0) << "cell " << i;
+            if (e(i) > 0) ++nFixed;
+            // Its group: the mixed cells around it share its state
+            for (const label j : cc[i])
+            {
+                if (!mixed[j]) continue;
+                worstGroup = max
+                (
+                    worstGroup,
+                    mag(s.c.rho[j]/p[j] - s.c.rho[i]/p[i])/(s.c.rho[i]/p[i])
+                );
+            }
+        }
+        label untouchedChanged = 0;
+        forAll(p, i)
+        {
+            if (mixed[i]) continue;
+            if
+            (
+                s.c.rho[i] != c0.rho[i] || s.c.rhoU[i] != c0.rhoU[i]
+             || s.c.rhoE[i] != c0.rhoE[i] || s.c.alpha[i] != c0.alpha[i]
+             || s.c.alphaRho1[i] != c0.alphaRho1[i]
+            )
+            {
+                ++untouchedChanged;
+            }
+        }
+        EXPECT_EQ(untouchedChanged, 0);
+    }
+    std::cout << "    " << nSeeds << " seeds of e < 0 (one hopeless and one"
+        << " near a skipped cell per mesh): " << nFixed << " made positive"
+        << " (expected " << nSeeds - 4 << "), " << nMixed << " cells mixed;"
+        << " max relative change of a component's total " << sci(worstTotal)
+        << " (tolerance 1e-13); density spread within a group "
+        << sci(worstGroup) << " (tolerance 1e-13)" << std::endl;
+    EXPECT_EQ(nFixed, nSeeds - 4);
+    EXPECT_LT(worstTotal, 1e-13);
+    EXPECT_LT(worstGroup, 1e-13);
+}
+
+
 TEST(SmallCellRedistribution, KeepsUniformStateAndPositivity)
 {
     // Uniform intrinsic state: every cell with gas keeps it; random

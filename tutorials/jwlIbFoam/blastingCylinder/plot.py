@@ -48,6 +48,11 @@ vGurney = sqrt2E / np.sqrt(M / C + 0.5)
 
 
 def read_list(text, name, kind=float):
+    # OpenFOAM writes a list of equal values as N{value} (e.g. no joint
+    # broken yet at an early write time)
+    m = re.search(r"\n%s\s+(\d+)\s*\{\s*([^\s}]+)\s*\}" % name, text)
+    if m:
+        return np.full(int(m.group(1)), kind(m.group(2)))
     m = re.search(r"\n%s\s+(\d+)\s*\(" % name, text)
     n = int(m.group(1))
     body = text[m.end():]
