@@ -257,12 +257,9 @@ void Foam::blastFluidState::checkRestartState
     // cut-off are the flow's (as in the run through, so restarts stay
     // bitwise)
     cavitated_ = true;
-    // and its cells count as first order for the check of the energy (a
-    // cell of e <= 0 that the run accepted at first order stays accepted)
-    lowOrder = 1;
-    const bool good = primitivesFromConservative(false, lowOrder, burn);
-    lowOrder = 0;
-    if (good)
+    // and so are its cells without positive internal energy
+    noEnergy_ = true;
+    if (primitivesFromConservative(false, lowOrder, burn))
     {
         return;
     }
@@ -391,14 +388,13 @@ bool Foam::blastFluidState::markRetry
     // c^2 > 0 through the cold terms below e = 0. Accepted, such a cell
     // grew (the products' jet between the cylinder's fragments, kinetic
     // energy 1.5 MJ/kg: e = -92 J/kg at 17.3 us, 40 cells down to -2.7e4
-    // J/kg a microsecond later, then a stop); retried at first order like a
-    // tension, it stays a few cells of -100 J/kg. A first-order cell (or a
-    // written state, see checkRestartState) keeps what the flow gave it
+    // J/kg a microsecond later, then a stop); it is retried at first order
+    // like a tension, unless the cell had no positive internal energy in
+    // the last accepted state already (a case's input, or what a
+    // first-order step left) or is first order already
     const auto unexpectedEnergy = [&](const label i)
     {
-        return
-            !(rhoe_[i] > 0) && !(lo0[i] > 0)
-         && !(cavitated_.size() && cavitated_[i]);
+        return !(rhoe_[i] > 0) && !(lo0[i] > 0) && !noEnergy_[i];
     };
     label firstUnexpected = -1;
     for (label i = 0; i < n && firstUnexpected < 0; ++i)
@@ -483,6 +479,10 @@ bool Foam::blastFluidState::primitivesFromConservative
     forAll(cavitated_, i)
     {
         cavitated_[i] = pEOS_[i] < pCav;
+    }
+    forAll(noEnergy_, i)
+    {
+        noEnergy_[i] = !(rhoe_[i] > 0);
     }
 
     correctBoundaries();
@@ -906,6 +906,7 @@ Foam::blastFluidState::blastFluidState(const fvMesh& mesh)
     rhoSafe_(mesh.nCells(), 1),
     pEOS_(mixture_.cavitation() ? mesh.nCells() : 0, 0),
     cavitated_(mixture_.cavitation() ? mesh.nCells() : 0, false),
+    noEnergy_(mesh.nCells(), false),
     current_(false)
 {
     readFields();
