@@ -680,17 +680,11 @@ Foam::label Foam::blastFluidSolver::mixNegativeEnergy()
     boolList& seed = changed_;
     seed.setSize(phi.size());
     bool any = false;
-    // (a cell without positive internal energy at the step's start too
-    // holds the case's input or what an earlier step could not mix: kept)
-    const auto positive = [](const scalar r, const vector& m, const scalar E)
-    {
-        return r > 0 && E > 0.5*magSqr(m)/r;
-    };
     forAll(phi, i)
     {
         seed[i] =
-            lo[i] > 0 && phi[i] > 0 && !positive(rho[i], rhoU[i], rhoE[i])
-         && positive(start_.rho[i], start_.rhoU[i], start_.rhoE[i]);
+            lo[i] > 0 && phi[i] > 0
+         && !(rho[i] > 0 && rhoE[i] > 0.5*magSqr(rhoU[i])/rho[i]);
         any = any || seed[i];
     }
     if (!returnReduce(any, orOp<bool>()))

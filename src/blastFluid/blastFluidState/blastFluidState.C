@@ -394,7 +394,9 @@ bool Foam::blastFluidState::markRetry
     // first-order step left) or is first order already
     const auto unexpectedEnergy = [&](const label i)
     {
-        return !(rhoe_[i] > 0) && !(lo0[i] > 0) && !noEnergy_[i];
+        return
+            !(rhoe_[i] > 0) && !(lo0[i] > 0) && !noEnergy_[i]
+         && !(cavitated_.size() && cavitated_[i]);
     };
     label firstUnexpected = -1;
     for (label i = 0; i < n && firstUnexpected < 0; ++i)

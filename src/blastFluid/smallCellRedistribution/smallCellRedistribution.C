@@ -190,19 +190,11 @@ void Foam::smallCellRedistribution::depositOrphans
     // A cell that closes among closed cells (a pocket crushed between
     // fragments, a sliver whose neighbours closed in the same step) has no
     // neighbourhood: its content goes to the gas nearest to it, the cells
-    // with gas in the rings of face neighbours, ring after ring until they
-    // hold minReceiverMass times its mass (up to maxRings), in proportion
-    // to their masses (by gas volume if they hold none). The orphan's gas
-    // loses its volume: given to a sliver that happens to be nearest, it
-    // compressed that gas far below its cold curve (2906 kg/m3 with
-    // e = 45 J/kg in a 2 % cell of the full-resolution cylinder, which
-    // then had no sound speed); spread by mass, every receiver's density
-    // grows by the same fraction, at most 5 % once the rings hold enough.
-    // Mass, momentum and energy are conserved; only when no ring within
-    // maxRings holds gas (or behind a processor face) is the content
-    // lost, and reported
+    // with gas in the first ring of face neighbours that has any (up to
+    // maxRings), in proportion to their gas volumes. Mass, momentum and
+    // energy are conserved; only beyond maxRings (or behind a processor
+    // face) is the content lost, and reported
     const label maxRings = 4;
-    const scalar minReceiverMass = 20;
     cutCellFields& w = w_;
     const scalarField& V = mesh_.V();
     forAll(w.orphans, o)
@@ -210,22 +202,12 @@ void Foam::smallCellRedistribution::depositOrphans
         const label seed = w.orphans[o];
         const FixedList<scalar, cutCellFields::maxComponents>& c =
             w.orphanContent[o];
-        scalar gasVolume = 0, mass = 0;
-        group_.clear();
+        scalar gasVolume = 0;
         forEachRing
         (
             seed, maxRings,
-            [&](const label j)
-            {
-                if (!(phi[j] > 0)) return;
-                group_.append(j);
-                gasVolume += phi[j]*V[j];
-                mass += max(component(0, j), scalar(0))*V[j];
-            },
-            [&]()
-            {
-                return gasVolume > 0 && mass >= minReceiverMass*c[0];
-            }
+            [&](const label j) { if (phi[j] > 0) gasVolume += phi[j]*V[j]; },
+            [&]() { return gasVolume > 0; }
         );
         if (gasVolume <= 0)
         {
@@ -233,15 +215,11 @@ void Foam::smallCellRedistribution::depositOrphans
             lostEnergy_ += c[4];
             continue;
         }
-        const bool byMass = mass > 0;
-        for (const label j : group_)
+        for (const label j : lastRing())
         {
-            // Content per cell volume: C w_j/V_j, w_j = m_j/sum m (or
-            // phi_j V_j/sum phi V)
-            const scalar s =
-                byMass
-              ? max(component(0, j), scalar(0))/mass
-              : phi[j]/gasVolume;
+            if (phi[j] <= 0) continue;
+            // Content per cell volume: C w_j/V_j, w_j = phi_j V_j/sum
+            const scalar s = phi[j]/gasVolume;
             for (label k = 0; k < nComp; ++k)
             {
                 component(k, j) += s*c[k];
