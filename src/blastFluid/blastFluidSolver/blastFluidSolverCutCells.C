@@ -513,7 +513,7 @@ void Foam::blastFluidSolver::mergeBadCells
         {
             bad[i] =
                 phi[i] > 0
-             && !(cRho[i] > 0 && cRhoE[i] > 0.5*magSqr(cRhoU[i])/cRho[i]);
+             && !hasInternalEnergy(cRho[i], cRhoU[i], cRhoE[i]);
             any = any || bad[i];
         }
         if (!returnReduce(any, orOp<bool>()))
@@ -684,7 +684,7 @@ Foam::label Foam::blastFluidSolver::mixNegativeEnergy()
     {
         seed[i] =
             lo[i] > 0 && phi[i] > 0
-         && !(rho[i] > 0 && rhoE[i] > 0.5*magSqr(rhoU[i])/rho[i]);
+         && !hasInternalEnergy(rho[i], rhoU[i], rhoE[i]);
         any = any || seed[i];
     }
     if (!returnReduce(any, orOp<bool>()))

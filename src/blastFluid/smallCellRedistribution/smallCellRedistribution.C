@@ -431,7 +431,7 @@ Foam::label Foam::smallCellRedistribution::mixUntilPositive
     const label nc = phi.size();
     const auto noEnergy = [&](const label i)
     {
-        return !(c.rho[i] > 0 && c.rhoE[i] > 0.5*magSqr(c.rhoU[i])/c.rho[i]);
+        return !hasInternalEnergy(c.rho[i], c.rhoU[i], c.rhoE[i]);
     };
     // The material contents mixed like the rest (empty when not tracked)
     scalarField* extra[4] = {&c.alpha, &c.alphaRho1, &c.alpha2, &c.alphaRho2};
@@ -445,7 +445,7 @@ Foam::label Foam::smallCellRedistribution::mixUntilPositive
         bool blocked = skip[i];
         group_.clear();
         group_.append(i);
-        const auto positive = [&]() { return m > 0 && E > 0.5*magSqr(mU)/m; };
+        const auto positive = [&]() { return hasInternalEnergy(m, mU, E); };
         forEachRing
         (
             i, maxRings,
