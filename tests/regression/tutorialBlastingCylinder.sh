@@ -1,8 +1,8 @@
 #!/bin/bash
-# Regression: tutorials/jwlIbFoam/blastingCylinder (copper cylinder test, quick mode, cut-cell coupling) with TNT and with Composition B: terminal wall velocity against each explosive's Gurney velocity (5 %), wall position from two measures, gas + solid energy; figures from its summary.json
+# Regression: tutorials/jwlIbFoam/blastingCylinder (copper cylinder test, quick mode, cut-cell coupling) with each JWL preset (TNT, Composition B, PETN, HMX): terminal wall velocity against each explosive's Gurney velocity (5 %), wall position from two measures, gas + solid energy; figures from its summary.json
 set -e -o pipefail
 cd "$JWLIBFOAM_TEST_DIR"
-for explosive in TNT CompB
+for explosive in TNT CompB PETN HMX
 do
     rm -rf $explosive && cp -r "$JWLIBFOAM_TUTORIALS/jwlIbFoam/blastingCylinder" $explosive
     (

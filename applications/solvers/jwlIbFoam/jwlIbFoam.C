@@ -234,7 +234,9 @@ int main(int argc, char *argv[])
             << returnReduce(fluid.nVented(), sumOp<label>()) << " ("
             << returnReduce(fluid.ventedMass(), sumOp<scalar>())
             << " kg of gas); cells mixed for a negative internal energy: "
-            << returnReduce(fluid.nMixed(), sumOp<label>()) << nl;
+            << returnReduce(fluid.nMixed(), sumOp<label>())
+            << "; cells mixed for no physical state between steps: "
+            << returnReduce(fluid.nRepaired(), sumOp<label>()) << nl;
     }
     if (crackGasPtr.valid()) crackGasPtr->reportSubSteps();
     if (partitionPtr.valid())

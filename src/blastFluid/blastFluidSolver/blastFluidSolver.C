@@ -830,7 +830,8 @@ Foam::blastFluidSolver::blastFluidSolver(const fvMesh& mesh)
     spreadEnergy_(0),
     nVented_(0),
     ventedMass_(0),
-    nMixed_(0)
+    nMixed_(0),
+    nRepaired_(0)
 {
     readControls();
 

@@ -560,10 +560,11 @@ void Foam::blastFluidState::listEOS
 }
 
 
-void Foam::blastFluidState::primitivesOfCells
+bool Foam::blastFluidState::primitivesOfCells
 (
     const labelUList& cells,
-    const scalarField* burn
+    const scalarField* burn,
+    const bool fatal
 )
 {
     // primitivesFromConservative(true) for these cells only, the same
@@ -607,10 +608,16 @@ void Foam::blastFluidState::primitivesOfCells
     }
     if (returnReduce(bad >= 0, orOp<bool>()))
     {
+        if (!fatal)
+        {
+            current_ = false;
+            return false;
+        }
         stopOnBadCell(bad);
     }
     correctBoundaries();
     current_ = true;
+    return true;
 }
 
 

@@ -424,7 +424,8 @@ Foam::label Foam::smallCellRedistribution::mixUntilPositive
     conservedFields& c,
     const boolList& seed,
     const boolList& skip,
-    const label maxRings
+    const label maxRings,
+    const label minRings
 )
 {
     const scalarField& V = mesh_.V();
@@ -438,7 +439,10 @@ Foam::label Foam::smallCellRedistribution::mixUntilPositive
     mixed_.clear();
     for (label i = 0; i < nc; ++i)
     {
-        if (!seed[i] || !(phi[i] > 0) || !noEnergy(i)) continue;
+        if (!seed[i] || !(phi[i] > 0) || (minRings == 0 && !noEnergy(i)))
+        {
+            continue;
+        }
         scalar Vg = phi[i]*V[i];
         scalar m = c.rho[i]*V[i], E = c.rhoE[i]*V[i];
         vector mU = c.rhoU[i]*V[i];
@@ -446,6 +450,8 @@ Foam::label Foam::smallCellRedistribution::mixUntilPositive
         group_.clear();
         group_.append(i);
         const auto positive = [&]() { return hasInternalEnergy(m, mU, E); };
+        // done() is asked before each ring: the first minRings are taken
+        label asked = 0;
         forEachRing
         (
             i, maxRings,
@@ -459,9 +465,9 @@ Foam::label Foam::smallCellRedistribution::mixUntilPositive
                 mU += c.rhoU[j]*V[j];
                 E += c.rhoE[j]*V[j];
             },
-            [&]() { return blocked || positive(); }
+            [&]() { return blocked || (asked++ >= minRings && positive()); }
         );
-        if (blocked || !positive()) continue;
+        if (blocked || !positive() || group_.size() == 1) continue;
         scalar x[4] = {0, 0, 0, 0};
         for (label k = 0; k < 4; ++k)
         {

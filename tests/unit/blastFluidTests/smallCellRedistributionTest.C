@@ -120,6 +120,18 @@ namespace
             }
         }
 
+        // Component k of cell i's content (0 rho, 1-3 rhoU, 4 rhoE,
+        // 5 alphaRho1, 6 alpha)
+        scalar component(const label k, const label i) const
+        {
+            return
+                k == 0 ? c.rho[i]
+              : k < 4 ? c.rhoU[i][k - 1]
+              : k == 4 ? c.rhoE[i]
+              : k == 5 ? c.alphaRho1[i]
+              : c.alpha[i];
+        }
+
         // Total of component k over the mesh (content times volume)
         scalar total(const label k) const
         {
@@ -127,13 +139,19 @@ namespace
             scalar s = 0;
             forAll(V, i)
             {
-                const scalar v =
-                    k == 0 ? c.rho[i]
-                  : k < 4 ? c.rhoU[i][k - 1]
-                  : k == 4 ? c.rhoE[i]
-                  : k == 5 ? c.alphaRho1[i]
-                  : c.alpha[i];
-                s += v*V[i];
+                s += component(k, i)*V[i];
+            }
+            return s;
+        }
+
+        // Scale of component k's total: sum over the cells of |content| V
+        scalar scale(const label k) const
+        {
+            const scalarField& V = mesh.V();
+            scalar s = 0;
+            forAll(V, i)
+            {
+                s += mag(component(k, i))*V[i];
             }
             return s;
         }
@@ -164,22 +182,12 @@ TEST(SmallCellRedistribution, ConservesEveryComponent)
         {
             srdCase s(n, nComp);
             s.randomise(17*n + nComp);
-            scalarField before(nComp);
-            scalarField scale(nComp, 0);
-            const scalarField& V = s.mesh.V();
-            for (label k = 0; k < nComp; ++k) before[k] = s.total(k);
+            scalarField before(nComp), scale(nComp);
             // Round-off scale: the sum of magnitudes
-            forAll(V, i)
+            for (label k = 0; k < nComp; ++k)
             {
-                scale[0] += mag(s.c.rho[i])*V[i];
-                scale[1] += mag(s.c.rhoU[i].x())*V[i];
-                scale[2] += mag(s.c.rhoU[i].y())*V[i];
-                scale[4] += mag(s.c.rhoE[i])*V[i];
-                if (nComp > 5)
-                {
-                    scale[5] += mag(s.c.alphaRho1[i])*V[i];
-                    scale[6] += mag(s.c.alpha[i])*V[i];
-                }
+                before[k] = s.total(k);
+                scale[k] = s.scale(k);
             }
             s.redistribute();
             const scalar lostShare = s.srd.lostMass()/scale[0];
@@ -248,17 +256,11 @@ TEST(SmallCellRedistribution, MixUntilPositive)
         skip[cc[blocked][0]] = true;
         nSeeds += seeds.size();
 
-        scalarField before(7), scale(7, 0);
-        for (label k = 0; k < 7; ++k) before[k] = s.total(k);
-        const scalarField& V = s.mesh.V();
-        forAll(V, i)
+        scalarField before(7), scale(7);
+        for (label k = 0; k < 7; ++k)
         {
-            scale[0] += mag(s.c.rho[i])*V[i];
-            scale[1] += mag(s.c.rhoU[i].x())*V[i];
-            scale[2] += mag(s.c.rhoU[i].y())*V[i];
-            scale[4] += mag(s.c.rhoE[i])*V[i];
-            scale[5] += mag(s.c.alphaRho1[i])*V[i];
-            scale[6] += mag(s.c.alpha[i])*V[i];
+            before[k] = s.total(k);
+            scale[k] = s.scale(k);
         }
         const conservedFields c0(s.c);
         const label nm = s.srd.mixUntilPositive(p, s.c, seed, skip, 3);
@@ -322,6 +324,124 @@ TEST(SmallCellRedistribution, MixUntilPositive)
     EXPECT_EQ(nFixed, nSeeds - 4);
     EXPECT_LT(worstTotal, 1e-13);
     EXPECT_LT(worstGroup, 1e-13);
+}
+
+
+// mixUntilPositive with rings to take at least (the solver's repair of a
+// state without a sound speed at a step's start, e > 0): a seed is mixed
+// with its first minRings rings of cells with gas, whatever its internal
+// energy, each of the group then at one intrinsic state; a seed with no
+// gas within those rings is left bitwise, as is every cell not mixed;
+// without minRings a seed with positive internal energy is not touched
+TEST(SmallCellRedistribution, MixAtLeastRings)
+{
+    scalar worstTotal = 0, worstGroup = 0;
+    label nGroups = 0;
+    for (const label minRings : {0, 1, 2})
+    {
+        const label n = 15;
+        srdCase s(n, 5);
+        s.randomise(13);
+        scalarField& p = s.phi.primitiveFieldRef();
+        const labelListList& cc = s.mesh.cellCells();
+        const label nc = p.size();
+        // Every cell some gas, at states of its own, but the isolated
+        // seed's neighbours
+        p = max(p, scalar(0.3));
+        forAll(p, i)
+        {
+            s.set(i, 1 + i % 7, vector(5 - i % 11, 3, 0), 1e5*(1 + i % 3), 0);
+        }
+        const label seedA = 4*n + 4, seedB = 10*n + 10;
+        // seedB: no gas within two rings
+        labelHashSet closed;
+        for (const label j : cc[seedB])
+        {
+            closed.insert(j);
+            for (const label k : cc[j]) closed.insert(k);
+        }
+        closed.erase(seedB);
+        for (const label j : closed.toc()) p[j] = 0;
+        for (const label i : {seedA, seedB})
+        {
+            // Ten times its neighbours' density, e > 0
+            p[i] = 0.05;
+            s.set(i, 60, vector(10, 0, 0), 1e4, 0);
+        }
+        for (const label j : closed.toc()) s.set(j, 0, Zero, 0, 0);
+        boolList seed(nc, false), skip(nc, false);
+        seed[seedA] = seed[seedB] = true;
+        scalarField before(5), scale(5);
+        for (label k = 0; k < 5; ++k)
+        {
+            before[k] = s.total(k);
+            scale[k] = s.scale(k);
+        }
+        const conservedFields c0(s.c);
+        const label nm =
+            s.srd.mixUntilPositive(p, s.c, seed, skip, 3, minRings);
+        boolList mixed(nc, false);
+        for (const label j : s.srd.mixedCells()) mixed[j] = true;
+        // The expected group of seedA: its rings up to minRings
+        label expected = 0;
+        if (minRings > 0)
+        {
+            labelHashSet group;
+            group.insert(seedA);
+            for (label r = 0; r < minRings; ++r)
+            {
+                for (const label i : group.toc())
+                {
+                    for (const label j : cc[i]) group.insert(j);
+                }
+            }
+            expected = group.size();
+            for (const label j : group.toc())
+            {
+                EXPECT_TRUE(mixed[j]) << "cell " << j;
+                worstGroup = max
+                (
+                    worstGroup,
+                    mag(s.c.rho[j]/p[j] - s.c.rho[seedA]/p[seedA])
+                   /(s.c.rho[seedA]/p[seedA])
+                );
+            }
+            ++nGroups;
+        }
+        EXPECT_EQ(nm, expected);
+        EXPECT_FALSE(mixed[seedB]);
+        label untouchedChanged = 0;
+        forAll(p, i)
+        {
+            if (mixed[i]) continue;
+            if
+            (
+                s.c.rho[i] != c0.rho[i] || s.c.rhoU[i] != c0.rhoU[i]
+             || s.c.rhoE[i] != c0.rhoE[i]
+            )
+            {
+                ++untouchedChanged;
+            }
+        }
+        EXPECT_EQ(untouchedChanged, 0);
+        for (label k = 0; k < 5; ++k)
+        {
+            if (k == 3) continue;
+            worstTotal = max
+            (
+                worstTotal,
+                mag(s.total(k) - before[k])/scale[k]
+            );
+        }
+        std::cout << "    minRings " << minRings << ": " << nm
+                  << " cells mixed (expected " << expected << ")"
+                  << std::endl;
+    }
+    std::cout << "    " << nGroups << " groups at one state to "
+              << sci(worstGroup) << ", totals to " << sci(worstTotal)
+              << " (tolerances 1e-13)" << std::endl;
+    EXPECT_LT(worstGroup, 1e-13);
+    EXPECT_LT(worstTotal, 1e-13);
 }
 
 

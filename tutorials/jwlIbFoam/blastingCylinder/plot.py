@@ -31,8 +31,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 # and its .mode file (Allrun -explosive), its density as setCharge used it
 Ri, Ro = 0.0127, 0.0153
 rhoCu = 8930.0
-# Gurney constants sqrt(2E) [m/s] (Cooper, Explosives Engineering)
-GURNEY = {"TNT": 2440.0, "PETN": 2930.0, "CompB": 2700.0}
+# Gurney constants sqrt(2E) [m/s] (Cooper, Explosives Engineering; HMX at
+# 1.89 g/cm3, the preset's density). Every JWL preset of the library has
+# one, so that ./Allrun -explosive NAME ends with its plot for each
+GURNEY = {"TNT": 2440.0, "PETN": 2930.0, "CompB": 2700.0, "HMX": 2970.0}
 tp = "".join(open(f).read() for f in ("constant/thermophysicalProperties",
              "constant/thermophysicalProperties.mode") if os.path.isfile(f))
 explosive = re.findall(r"\bexplosive\s+(\w+)\s*;", tp)[-1]
