@@ -990,21 +990,53 @@ bool Foam::blastFluidSolver::advance(const scalar dt, const bool mayFail)
 }
 
 
+Foam::scalar Foam::blastFluidSolver::gasTotal(const scalarField& q) const
+{
+    // sum q V phi, in the order of gSum(q*V*phi) (the budget's figures
+    // unchanged) without the temporaries (called every step)
+    const scalarField& V = mesh_.V();
+    scalar s = 0;
+    if (fluidFractionPtr_.valid())
+    {
+        const scalarField& phi = fluidFractionPtr_->primitiveField();
+        forAll(q, i) s += q[i]*V[i]*phi[i];
+    }
+    else
+    {
+        forAll(q, i) s += q[i]*V[i];
+    }
+    return returnReduce(s, sumOp<scalar>());
+}
+
+
 Foam::scalar Foam::blastFluidSolver::totalMass() const
 {
-    return gSum(state_.rho().primitiveField()*mesh_.V()*fluidFraction());
+    return gasTotal(state_.rho().primitiveField());
 }
 
 
 Foam::scalar Foam::blastFluidSolver::totalEnergy() const
 {
-    return gSum(state_.rhoE().primitiveField()*mesh_.V()*fluidFraction());
+    return gasTotal(state_.rhoE().primitiveField());
 }
 
 
 Foam::vector Foam::blastFluidSolver::totalMomentum() const
 {
-    return gSum(state_.rhoU().primitiveField()*(mesh_.V()*fluidFraction()));
+    // In the order of gSum(rhoU*(V*phi))
+    const vectorField& rhoU = state_.rhoU().primitiveField();
+    const scalarField& V = mesh_.V();
+    vector s = Zero;
+    if (fluidFractionPtr_.valid())
+    {
+        const scalarField& phi = fluidFractionPtr_->primitiveField();
+        forAll(rhoU, i) s += rhoU[i]*(V[i]*phi[i]);
+    }
+    else
+    {
+        forAll(rhoU, i) s += rhoU[i]*V[i];
+    }
+    return returnReduce(s, sumOp<vector>());
 }
 
 

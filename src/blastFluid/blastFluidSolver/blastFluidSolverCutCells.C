@@ -292,8 +292,13 @@ void Foam::blastFluidSolver::fillEmptyCells()
     state_.rhoU().correctBoundaryConditions();
     state_.rhoE().correctBoundaryConditions();
     fluidFractionPtr_->correctBoundaryConditions();
-    scalarField rhoB, rhoEB, phiB, alphaB, ar1B;
-    vectorField rhoUB;
+    emptyFillWork& k = emptyFill_;
+    scalarField& rhoB = k.rhoB;
+    scalarField& rhoEB = k.rhoEB;
+    scalarField& phiB = k.phiB;
+    scalarField& alphaB = k.alphaB;
+    scalarField& ar1B = k.ar1B;
+    vectorField& rhoUB = k.rhoUB;
     addr_.coupledNeighbourValues(state_.rho(), rhoB);
     addr_.coupledNeighbourValues(state_.rhoU(), rhoUB);
     addr_.coupledNeighbourValues(state_.rhoE(), rhoEB);
@@ -309,9 +314,13 @@ void Foam::blastFluidSolver::fillEmptyCells()
     // Mean of the open neighbours with gas, weighted by their fluid
     // fractions (the same weights across processor faces)
     const label nCells = mesh_.nCells();
-    scalarField w(nCells, 0), r(nCells, 0), e(nCells, 0), a(nCells, 0);
-    scalarField ar(nCells, 0);
-    vectorField m(nCells, Zero);
+    k.reset(nCells);
+    scalarField& w = k.w;
+    scalarField& r = k.r;
+    scalarField& e = k.e;
+    scalarField& a = k.a;
+    scalarField& ar = k.ar;
+    vectorField& m = k.m;
     auto add = [&](const label i, const scalar wt, const scalar rr,
                    const vector& mm, const scalar ee, const scalar aa,
                    const scalar arr)
@@ -385,12 +394,16 @@ void Foam::blastFluidSolver::fillEmptyCellsField(volScalarField& fld)
     // with gas weighted by their fluid fractions
     const scalarField& phi = fluidFractionPtr_->primitiveField();
     fld.correctBoundaryConditions();
-    scalarField nbr, phiB;
+    emptyFillWork& k = emptyFill_;
+    scalarField& nbr = k.rhoB;
+    scalarField& phiB = k.phiB;
     addr_.coupledNeighbourValues(fld, nbr);
     addr_.coupledNeighbourValues(fluidFractionPtr_(), phiB);
     scalarField& v = fld.primitiveFieldRef();
     const label nCells = mesh_.nCells();
-    scalarField w(nCells, 0), sum(nCells, 0);
+    k.reset(nCells);
+    scalarField& w = k.w;
+    scalarField& sum = k.r;
     for (label f = 0; f < addr_.nInternal(); ++f)
     {
         if (aperture[f] <= 0) continue;

@@ -342,33 +342,37 @@ void Foam::immersedBodyCoupling::startStep
 
 namespace
 {
-    // Gas fraction 1 - alpha; what is left of a covered cell by round-off
-    // (the sum of the overlaps against its area) is no gas
-    Foam::tmp<Foam::scalarField> gasFraction(const Foam::scalarField& alpha)
+    // Gas fraction 1 - alpha into phi (sized once); what is left of a
+    // covered cell by round-off (the sum of the overlaps against its area)
+    // is no gas
+    const Foam::scalarField& gasFraction
+    (
+        const Foam::scalarField& alpha,
+        Foam::scalarField& phi
+    )
     {
-        auto tphi = Foam::tmp<Foam::scalarField>::New(alpha.size());
-        Foam::scalarField& phi = tphi.ref();
+        phi.setSize(alpha.size());
         forAll(alpha, i)
         {
             const Foam::scalar f = 1 - alpha[i];
             phi[i] = f > roundOffFraction ? f : 0;
         }
-        return tphi;
+        return phi;
     }
 }
 
 
-Foam::tmp<Foam::scalarField>
+const Foam::scalarField&
 Foam::immersedBodyCoupling::fluidFractionStart() const
 {
-    return gasFraction(alphaWork_);
+    return gasFraction(alphaWork_, gasStart_);
 }
 
 
-Foam::tmp<Foam::scalarField>
+const Foam::scalarField&
 Foam::immersedBodyCoupling::fluidFractionEnd() const
 {
-    return gasFraction(alphaEnd_);
+    return gasFraction(alphaEnd_, gasEnd_);
 }
 
 
