@@ -13,7 +13,8 @@
 #    gas + solid energy conserved to 1e-8 relative, momentum to 1e-10;
 #    pressure noise in the cut cells;
 #  - piston at constant speed (a heavy, stiff block across a closed
-#    channel, its faces inside cells) pushed into the gas on one side and
+#    channel, its faces inside cells, and once on face lines at the start)
+#    pushed into the gas on one side and
 #    withdrawn from it on the other, air and TNT products: the pressure
 #    plateaus against the exact Riemann solutions (exactRiemann with the
 #    mirror states, 1 %), gas energy change against the work of the gas
@@ -77,11 +78,13 @@ PY
 done
 
 # Pistons: name, thermophysicalProperties material lines, rho, p, speed,
-# end time, plateau length
+# end time, plateau length[, the piston's x range at the start: by default
+# 0.3013-0.4487, its faces inside cells of 2.5 mm]
 piston()
 {
-    local c=$1 mat=$2 rho=$3 p=$4 u=$5 tEnd=$6 len=$7
+    local c=$1 mat=$2 rho=$3 p=$4 u=$5 tEnd=$6 len=$7 x0=${8:-0.3013} x1=${9:-0.4487}
     rm -rf $c && cp -r "$data/piston" $c
+    sed -i "s/min (0.3013 0); max (0.4487 0.01)/min ($x0 0); max ($x1 0.01)/" $c/system/femdemMeshDict
     printf 'materials (%s);\n%s\n' "${mat%% *}" "$mat" >> $c/constant/thermophysicalProperties
     sed -i "s/^internalField.*/internalField uniform $rho;/" $c/0/rho
     sed -i "s/^internalField.*/internalField uniform $p;/" $c/0/p
@@ -106,13 +109,13 @@ DICT
     local pc pe
     pc=$(sed -n 's/.*p\* = \(\S*\).*/\1/p' $c/log.compression)
     pe=$(sed -n 's/.*p\* = \(\S*\).*/\1/p' $c/log.expansion)
-    read ec ee dW < <(cd $c && /usr/bin/python3 - $tEnd $u $len $pc $pe <<'PY'
+    read ec ee dW < <(cd $c && /usr/bin/python3 - $tEnd $u $len $pc $pe $x0 $x1 <<'PY'
 import sys, os, numpy as np, budget
-u, L, pc, pe = map(float, sys.argv[2:])
+u, L, pc, pe, x0, x1 = map(float, sys.argv[2:])
 t = max((d for d in os.listdir(".") if d.replace(".", "").replace("e-", "").isdigit()), key=float)
 p, phi = budget.internal(f"{t}/p"), budget.internal(f"{t}/fluidFraction")
 x = (np.arange(p.size) % 400 + 0.5) * 0.0025
-front, back = 0.3013 - u * float(t), 0.4487 - u * float(t)
+front, back = x0 - u * float(t), x1 - u * float(t)
 ahead = (phi >= 1) & (x > front - L) & (x < front - 0.01)
 behind = (phi >= 1) & (x > back + 0.005) & (x < back + L)
 b = budget.load()
@@ -129,6 +132,9 @@ PY
 }
 piston pistonAir "air { equationOfState idealGas; gamma 1.4; Cv 718; }" 1.2 1e5 50 5e-4 0.1
 piston pistonTNT "products { equationOfState JWL; explosive TNT; }" 100 1e8 200 1.5e-4 0.07
+# The same with the piston's faces on face lines at the start (0.3, 0.45)
+piston pistonAirOnFace "air { equationOfState idealGas; gamma 1.4; Cv 718; }" 1.2 1e5 50 5e-4 0.1 0.3 0.45
+piston pistonTNTOnFace "products { equationOfState JWL; explosive TNT; }" 100 1e8 200 1.5e-4 0.07 0.3 0.45
 
 # Free disc through air at rest: 1000 steps (2 ms), written at 1 ms
 newCase serial
