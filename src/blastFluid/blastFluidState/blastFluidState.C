@@ -652,19 +652,39 @@ void Foam::blastFluidState::stopOnBadCell(const label bad) const
     const vectorField& U = U_.primitiveField();
     const scalarField& p = p_.primitiveField();
 
+    // What is wrong with it, in the message's first words: the density,
+    // the pressure, or neither (then c^2 <= 0: a state outside the
+    // equation of state's range, e.g. JWL products below their cold
+    // curve, whose p stays positive)
     List<string> where(Pstream::nProcs());
     if (bad >= 0)
     {
+        const scalar r = rho[bad], pb = p[bad];
         OStringStream os;
         os.precision(8);
-        os  << "cell " << bad;
+        os  <<
+            (
+                !(r > 0) || !std::isfinite(r)
+              ? "Negative or non-finite density"
+              : !(pb > 0) || !std::isfinite(pb)
+              ? "Negative or non-finite pressure"
+              : "No sound speed (c^2 <= 0 at positive density and pressure:"
+                " outside the equation of state's range, e.g. below its"
+                " cold curve)"
+            )
+            << ": non-physical state at time " << mesh_.time().timeName()
+            << " in cell " << bad;
         if (Pstream::parRun())
         {
             os  << " of processor " << Pstream::myProcNo();
         }
-        os  << " (centre " << mesh_.C()[bad] << "): rho = " << rho[bad]
-            << ", p = " << p[bad] << ", U = " << U[bad]
+        os  << " (centre " << mesh_.C()[bad] << "): rho = " << r
+            << ", p = " << pb << ", U = " << U[bad]
             << ", rhoE = " << rhoE[bad];
+        if (r > 0 && std::isfinite(r))
+        {
+            os  << ", e = " << e_[bad];
+        }
         where[Pstream::myProcNo()] = os.str();
     }
     Pstream::gatherList(where);
@@ -679,8 +699,6 @@ void Foam::blastFluidState::stopOnBadCell(const label bad) const
         }
     }
     FatalErrorInFunction
-        << "Negative or non-finite density/pressure: non-physical"
-        << " state at time " << mesh_.time().timeName() << " in "
         << first.c_str() << nl
         << "    Stopping without writing this time; the last written"
         << " time is the last good state." << exit(FatalError);
