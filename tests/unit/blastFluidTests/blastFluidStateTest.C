@@ -164,6 +164,25 @@ namespace
         {}
     };
 
+    // The message of the fatal conversion of s (empty if it passed),
+    // printed
+    std::string fatalConversion(blastFluidState& s, scalarField& lowOrder)
+    {
+        FatalError.throwExceptions();
+        std::string message;
+        try
+        {
+            s.primitivesFromConservative(true, lowOrder, nullptr);
+        }
+        catch (const Foam::error& e)
+        {
+            message = e.message();
+        }
+        FatalError.dontThrowExceptions();
+        std::cout << "  fatal: " << message.substr(0, 150) << std::endl;
+        return message;
+    }
+
     scalar maxRelDiff(const scalarField& a, const scalarField& b)
     {
         scalar d = 0;
@@ -291,18 +310,7 @@ TEST(BlastFluidState, BadCells)
     EXPECT_EQ(marked[0], 13);
     EXPECT_EQ(marked[1], 40);
 
-    FatalError.throwExceptions();
-    std::string message;
-    try
-    {
-        s.primitivesFromConservative(true, r.lowOrder, nullptr);
-    }
-    catch (const Foam::error& e)
-    {
-        message = e.message();
-    }
-    FatalError.dontThrowExceptions();
-    std::cout << "  fatal: " << message.substr(0, 120) << std::endl;
+    const std::string message = fatalConversion(s, r.lowOrder);
     // (the screening before the equation of state finds the negative
     // density first)
     EXPECT_TRUE
@@ -432,19 +440,7 @@ TEST(BlastFluidState, StopNamesWhatIsWrong)
     const auto stopMessage = [&]()
     {
         s.invalidate();
-        FatalError.throwExceptions();
-        std::string message;
-        try
-        {
-            s.primitivesFromConservative(true, r.lowOrder, nullptr);
-        }
-        catch (const Foam::error& err)
-        {
-            message = err.message();
-        }
-        FatalError.dontThrowExceptions();
-        std::cout << "  fatal: " << message.substr(0, 150) << std::endl;
-        return message;
+        return fatalConversion(s, r.lowOrder);
     };
     const label i = 5;
     scalarField& rho = s.rho().primitiveFieldRef();
