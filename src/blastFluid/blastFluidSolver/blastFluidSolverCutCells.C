@@ -1007,7 +1007,12 @@ void Foam::blastFluidSolver::ventCrushedPockets
         phiEnd[i] = 0;
         any = true;
     }
-    if (any)
+    // Every rank alike (the boundary exchange is collective, and so are the
+    // conversions the invalidated state leads to): a pocket vented on one
+    // rank only had the other skip this exchange, and the next reduction
+    // received the patch values (MPI_ERR_TRUNCATE, the full-resolution
+    // cylinder on 2 ranks at 4.6 us)
+    if (returnReduce(any, orOp<bool>()))
     {
         st.invalidate();
         fluidFractionPtr_->correctBoundaryConditions();
