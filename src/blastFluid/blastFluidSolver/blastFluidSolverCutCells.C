@@ -598,7 +598,7 @@ bool Foam::blastFluidSolver::advanceCutCells
 )
 {
     fillEmptyCells();
-    if (!state_.current())
+    if (!returnReduce(state_.current(), andOp<bool>()))
     {
         repairState(fluidFractionPtr_->primitiveField());
     }
@@ -1062,8 +1062,10 @@ void Foam::blastFluidSolver::addEnergy(const scalarField& dE)
           ? phi[i]*max(rhoE[i] - 0.5*magSqr(rhoU[i])/rho[i], scalar(0))
           : scalar(0);
     };
-    // Only what a cap held back is spread
-    const bool current = state_.current();
+    // Only what a cap held back is spread. (Whether the primitives are
+    // current decides between collective calls below: every rank takes
+    // the same branch)
+    const bool current = returnReduce(state_.current(), andOp<bool>());
     changedCells_.clear();
     scalar rest = 0;
     forAll(dE, i)
