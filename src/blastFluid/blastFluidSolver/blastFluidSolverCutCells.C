@@ -293,22 +293,16 @@ void Foam::blastFluidSolver::fillEmptyCells()
     state_.rhoE().correctBoundaryConditions();
     fluidFractionPtr_->correctBoundaryConditions();
     emptyFillWork& k = emptyFill_;
-    scalarField& rhoB = k.rhoB;
-    scalarField& rhoEB = k.rhoEB;
-    scalarField& phiB = k.phiB;
-    scalarField& alphaB = k.alphaB;
-    scalarField& ar1B = k.ar1B;
-    vectorField& rhoUB = k.rhoUB;
-    addr_.coupledNeighbourValues(state_.rho(), rhoB);
-    addr_.coupledNeighbourValues(state_.rhoU(), rhoUB);
-    addr_.coupledNeighbourValues(state_.rhoE(), rhoEB);
-    addr_.coupledNeighbourValues(fluidFractionPtr_(), phiB);
+    addr_.coupledNeighbourValues(state_.rho(), k.rhoB);
+    addr_.coupledNeighbourValues(state_.rhoU(), k.rhoUB);
+    addr_.coupledNeighbourValues(state_.rhoE(), k.rhoEB);
+    addr_.coupledNeighbourValues(fluidFractionPtr_(), k.phiB);
     if (state_.multiPhase())
     {
         state_.alpha1Ptr()->correctBoundaryConditions();
         state_.alphaRho1Ptr()->correctBoundaryConditions();
-        addr_.coupledNeighbourValues(state_.alpha1Ptr()(), alphaB);
-        addr_.coupledNeighbourValues(state_.alphaRho1Ptr()(), ar1B);
+        addr_.coupledNeighbourValues(state_.alpha1Ptr()(), k.alphaB);
+        addr_.coupledNeighbourValues(state_.alphaRho1Ptr()(), k.ar1B);
     }
 
     // Mean of the open neighbours with gas, weighted by their fluid
@@ -352,12 +346,15 @@ void Foam::blastFluidSolver::fillEmptyCells()
     for (label cf = addr_.nInternal(); cf < addr_.nFaces(); ++cf)
     {
         const label b = cf - addr_.nInternal(), P = addr_.own()[cf];
-        if (aperture[cf] > 0 && phi[P] <= 0 && phiB.size() && phiB[b] > 0)
+        if
+        (
+            aperture[cf] > 0 && phi[P] <= 0 && k.phiB.size() && k.phiB[b] > 0
+        )
         {
             add
             (
-                P, phiB[b], rhoB[b], rhoUB[b], rhoEB[b],
-                mp ? alphaB[b] : 0, mp ? ar1B[b] : 0
+                P, k.phiB[b], k.rhoB[b], k.rhoUB[b], k.rhoEB[b],
+                mp ? k.alphaB[b] : 0, mp ? k.ar1B[b] : 0
             );
         }
     }
@@ -746,22 +743,35 @@ void Foam::blastFluidSolver::repairState
         {
             break;
         }
-        if (nearProcessor_.size() != phi.size())
-        {
-            findNearProcessor();
-        }
-        contentFromState(phi, cut_);
-        const label n = srd().mixUntilPositive
-        (
-            phi, cut_, seed, nearProcessor_, rings, rings
-        );
-        if (n > 0)
-        {
-            stateFromContent(phi, cut_, nullptr, &srd().mixedCells());
-            nRepaired_ += n;
-        }
+        nRepaired_ += mixSeeds(phi, rings, rings);
     }
     primitivesFromConservative(true);
+}
+
+
+Foam::label Foam::blastFluidSolver::mixSeeds
+(
+    const scalarField& phi,
+    const label maxRings,
+    const label minRings
+)
+{
+    if (nearProcessor_.size() != phi.size())
+    {
+        findNearProcessor();
+    }
+    contentFromState(phi, cut_);
+    const label n = srd().mixUntilPositive
+    (
+        phi, cut_, changed_, nearProcessor_, maxRings, minRings
+    );
+    if (n > 0)
+    {
+        // Only the mixed cells' states change (the others keep theirs
+        // bitwise)
+        stateFromContent(phi, cut_, nullptr, &srd().mixedCells());
+    }
+    return n;
 }
 
 
@@ -786,19 +796,7 @@ Foam::label Foam::blastFluidSolver::mixNegativeEnergy()
     {
         return 0;
     }
-    if (nearProcessor_.size() != phi.size())
-    {
-        findNearProcessor();
-    }
-    contentFromState(phi, cut_);
-    const label n = srd().mixUntilPositive(phi, cut_, seed, nearProcessor_, 3);
-    if (n > 0)
-    {
-        // Only the mixed cells' states change (the others keep theirs
-        // bitwise)
-        stateFromContent(phi, cut_, nullptr, &srd().mixedCells());
-    }
-    return n;
+    return mixSeeds(phi, 3);
 }
 
 

@@ -164,6 +164,25 @@ namespace
         {}
     };
 
+    // A unit-square case of n x n cells with the thermophysicalProperties
+    // body thermo and no start time yet (the test writes its fields)
+    fileName caseWithMaterials
+    (
+        const label n,
+        const std::string& prefix,
+        const std::string& thermo
+    )
+    {
+        const fileName dir = blockMeshCase::unitSquare(n, prefix);
+        if (isDir(dir/"0")) rmDir(dir/"0");
+        blockMeshCase::writeDict
+        (
+            dir/"constant"/"thermophysicalProperties",
+            "thermophysicalProperties", thermo
+        );
+        return dir;
+    }
+
     // The message of the fatal conversion of s (empty if it passed),
     // printed
     std::string fatalConversion(blastFluidState& s, scalarField& lowOrder)
@@ -337,11 +356,9 @@ TEST(BlastFluidState, BadCells)
 TEST(BlastFluidState, NegativeEnergyRetried)
 {
     const label n = 6, nc = n*n;
-    const fileName dir = blockMeshCase::unitSquare(n, "stateTestEnergy");
-    if (isDir(dir/"0")) rmDir(dir/"0");
-    blockMeshCase::writeDict
+    const fileName dir = caseWithMaterials
     (
-        dir/"constant"/"thermophysicalProperties", "thermophysicalProperties",
+        n, "stateTestEnergy",
         "materials (products);\n"
         "products { equationOfState JWL; explosive TNT; }\n"
     );
@@ -413,11 +430,9 @@ TEST(BlastFluidState, NegativeEnergyRetried)
 TEST(BlastFluidState, StopNamesWhatIsWrong)
 {
     const label n = 4, nc = n*n;
-    const fileName dir = blockMeshCase::unitSquare(n, "stateTestReason");
-    if (isDir(dir/"0")) rmDir(dir/"0");
-    blockMeshCase::writeDict
+    const fileName dir = caseWithMaterials
     (
-        dir/"constant"/"thermophysicalProperties", "thermophysicalProperties",
+        n, "stateTestReason",
         "materials (products air);\n"
         "products { equationOfState JWL; explosive TNT; }\n"
         "air { equationOfState idealGas; gamma 1.4; Cv 718; }\n"
@@ -571,13 +586,9 @@ TEST(BlastFluidState, InputOutOfRange)
 TEST(BlastFluidSolver, RepairsStateChangedBetweenSteps)
 {
     const label n = 12, nc = n*n;
-    const fileName dir = blockMeshCase::unitSquare(n, "solverRepair");
-    if (isDir(dir/"0")) rmDir(dir/"0");
-    blockMeshCase::writeDict
+    const fileName dir = caseWithMaterials
     (
-        dir/"constant"/"thermophysicalProperties",
-        "thermophysicalProperties",
-        std::string("materials (air);\n") + materialDicts
+        n, "solverRepair", std::string("materials (air);\n") + materialDicts
     );
     writeField
     (
